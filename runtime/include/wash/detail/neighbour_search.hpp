@@ -1,0 +1,109 @@
+//===- wash/detail/neighbour_search.hpp - canonical neighbour lists -*- C++ -*-===//
+//
+// The neighbours of particle i are the other particles j with
+//   sum over axes a = x, y[, z] of (pos_j[a] - pos_i[a])^2  <=  radius^2
+// (in double, axes summed in that order), visited in the canonical order:
+// by the cell of j in a fixed grid of cell size `radius` anchored at the origin
+// (cell coordinate floor(pos[a] / radius)), cells in lexicographic (z,) y, x
+// order, and by ascending id inside a cell. The order depends only on the
+// particles' positions and ids, never on storage order, threads or ranks.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/vec.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace wash::detail {
+
+/// Grid coordinate of x in a grid of cell size `cellSize` anchored at 0.
+inline std::int64_t cellCoordinate(double x, double cellSize) {
+  return static_cast<std::int64_t>(std::floor(x / cellSize));
+}
+
+/// True if b lies within radius of a (the neighbour test above).
+template <int D>
+bool withinRadius(const Vec<double, D> &a, const Vec<double, D> &b, double radius) {
+  double d2 = 0.0;
+  for (int k = 0; k < D; ++k) {
+    double d = b.at(k) - a.at(k);
+    d2 += d * d;
+  }
+  return d2 <= radius * radius;
+}
+
+/// A cell list answering canonical neighbour queries. Simple rather than fast:
+/// it is the reference the generated programs are checked against.
+template <int D> class CellList {
+public:
+  /// Cell key with the slowest axis first, so that array order is (z,) y, x order.
+  using Key = std::array<std::int64_t, D>;
+
+  void build(const std::vector<Vec<double, D>> &positions, const std::vector<std::uint64_t> &ids,
+             double radius) {
+    positions_ = &positions;
+    ids_ = &ids;
+    radius_ = radius;
+    cells_.clear();
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      cells_[keyOf(positions[i])].push_back(i);
+    for (auto &[key, members] : cells_)
+      std::sort(members.begin(), members.end(),
+                [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+  }
+
+  Key keyOf(const Vec<double, D> &p) const {
+    Key key;
+    for (int a = 0; a < D; ++a)
+      key[D - 1 - a] = cellCoordinate(p.at(a), radius_);
+    return key;
+  }
+
+  /// Indices of the neighbours of particle i, in canonical order.
+  void neighbours(std::size_t i, std::vector<std::size_t> &out) const {
+    out.clear();
+    const Vec<double, D> &p = (*positions_)[i];
+    // Cells overlapping [p - r, p + r] on each axis, slowest axis first. Computed
+    // from the interval rather than as +-1 so rounding at cell borders cannot lose a neighbour.
+    Key lo, hi;
+    for (int a = 0; a < D; ++a) {
+      lo[D - 1 - a] = cellCoordinate(p.at(a) - radius_, radius_);
+      hi[D - 1 - a] = cellCoordinate(p.at(a) + radius_, radius_);
+    }
+    Key key = lo;
+    while (true) {
+      if (auto it = cells_.find(key); it != cells_.end())
+        for (std::size_t j : it->second)
+          if (j != i && withinRadius<D>(p, (*positions_)[j], radius_))
+            out.push_back(j);
+      int a = D - 1; // advance the fastest axis first
+      while (a >= 0 && key[a] == hi[a])
+        key[a] = lo[a], --a;
+      if (a < 0)
+        break;
+      ++key[a];
+    }
+  }
+
+private:
+  struct KeyHash {
+    std::size_t operator()(const Key &k) const {
+      std::size_t h = 0;
+      for (std::int64_t c : k)
+        h = h * 1000003u ^ std::hash<std::int64_t>()(c);
+      return h;
+    }
+  };
+  const std::vector<Vec<double, D>> *positions_ = nullptr;
+  const std::vector<std::uint64_t> *ids_ = nullptr;
+  double radius_ = 0.0;
+  std::unordered_map<Key, std::vector<std::size_t>, KeyHash> cells_;
+};
+
+} // namespace wash::detail

@@ -1,0 +1,46 @@
+//===- wash/detail/options.hpp - program options of every wash program -*- C++ -*-===//
+//
+// Every wash program, reference or generated, accepts the same options. They
+// are removed from argv before the simulation's own main sees it.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace wash::detail {
+
+enum class OutputFormat { Vtk, Csv };
+
+struct RunOptions {
+  std::optional<std::uint64_t> steps; ///< overrides set_max_iterations
+  std::string outDir = "out";
+  std::uint64_t outputEvery = 0; ///< 0: final state only
+  OutputFormat format = OutputFormat::Vtk;
+  std::string dumpPath; ///< empty: no dump
+  bool quiet = false;
+  bool help = false;
+};
+
+struct ParsedArgs {
+  RunOptions options;
+  std::vector<char *> userArgv; ///< argv[0] and everything that is not a wash option
+};
+
+/// Thrown for a bad command line; the message is ready to print.
+struct OptionError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Splits argv into wash options and the simulation's own arguments. Accepts
+/// `--opt value` and `--opt=value`; `--` ends the wash options.
+ParsedArgs parseProgramOptions(int argc, char **argv);
+
+/// The text --help prints.
+std::string usageText(const std::string &program);
+
+} // namespace wash::detail

@@ -1,0 +1,126 @@
+//===- wash/wash.hpp - the one header a wash simulation includes -*- C++ -*-===//
+//
+// A simulation is one C++ file: constants, a `main` that configures the run and
+// registers forces and kernels in order, and kernels written for one particle.
+// Compiled as it is against this header and the reference runtime it is the
+// untranslated program that defines what the simulation means (docs/semantics.md).
+// The `wash` translator reads the same file and emits a specialised program.
+//
+// The dimension of a simulation is fixed at compile time by WASH_DIM (2 or 3).
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/vec.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <source_location>
+#include <string>
+#include <vector>
+
+#ifndef WASH_DIM
+#define WASH_DIM 2
+#endif
+
+/// pi, for simulations that spell it `PI`.
+inline constexpr double PI = 3.14159265358979323846;
+
+/// Time step of an animation at 60 frames per second, split into
+/// `iterationsPerFrame` iterations and scaled by `timeScale`.
+constexpr double TIME_DELTA(double timeScale, double iterationsPerFrame) {
+  return (1.0 / 60.0) / iterationsPerFrame * timeScale;
+}
+
+namespace wash {
+
+/// Number of spatial dimensions of this program.
+inline constexpr int dimensions = WASH_DIM;
+/// The vector type of particle positions, velocities and vector forces.
+using ParticleVec = Vec<double, WASH_DIM>;
+
+namespace detail {
+struct ParticleStore;
+}
+
+/// A handle to one particle. Kernels receive their own particle as `Particle&`
+/// and its neighbours as `const std::vector<Particle>&`: neighbours are read-only.
+class Particle {
+public:
+  using Location = std::source_location;
+
+  /// Creation index: 0, 1, 2, ... in the order create_particle was called.
+  std::size_t get_id() const;
+
+  ParticleVec get_pos() const;
+  void set_pos(const ParticleVec &pos);
+  ParticleVec get_vel() const;
+  void set_vel(const ParticleVec &vel);
+  ParticleVec get_acc() const;
+  void set_acc(const ParticleVec &acc);
+  double get_density() const;
+  void set_density(double density);
+  double get_mass() const;
+  void set_mass(double mass);
+  double get_smoothing_length() const;
+  void set_smoothing_length(double smoothingLength);
+
+  /// A named per-particle property ("force"). A name never passed to add_force
+  /// is created on first use; using one name both as scalar and vector is an error.
+  double get_force_scalar(const std::string &name, Location loc = Location::current()) const;
+  void set_force_scalar(const std::string &name, double value,
+                        Location loc = Location::current());
+  ParticleVec get_force_vector(const std::string &name, Location loc = Location::current()) const;
+  void set_force_vector(const std::string &name, const ParticleVec &value,
+                        Location loc = Location::current());
+
+  Particle(detail::ParticleStore *store, std::size_t index) : store_(store), index_(index) {}
+
+private:
+  detail::ParticleStore *store_;
+  std::size_t index_;
+};
+
+using InitKernel = void (*)();
+using UpdateKernel = void (*)(Particle &);
+using ForceKernel = void (*)(Particle &, const std::vector<Particle> &);
+
+/// Storage precision of every particle property: "double" or "float".
+void set_precision(const std::string &precision,
+                   std::source_location loc = std::source_location::current());
+/// Neighbours of a particle are the other particles within this distance.
+void set_influence_radius(double radius,
+                          std::source_location loc = std::source_location::current());
+void set_simulation_name(const std::string &name);
+/// Base name of output files (default: the simulation name).
+void set_output_file_name(const std::string &name);
+/// Number of iterations start() runs (the --steps option overrides it).
+void set_max_iterations(std::uint64_t iterations);
+
+/// Registers a named property: dim 1 is a scalar, dim == WASH_DIM a vector.
+void add_force(const std::string &name, int dim,
+               std::source_location loc = std::source_location::current());
+
+/// Kernels run in registration order: init kernels once, then every iteration
+/// each update kernel (per particle) and force kernel (per particle, with its
+/// neighbours) in the order they were added.
+void add_init_kernel(InitKernel kernel);
+void add_update_kernel(UpdateKernel kernel);
+void add_force_kernel(ForceKernel kernel);
+
+/// Adds a particle (only from an init kernel). The reference stays valid until
+/// the next create_particle call.
+Particle &create_particle(double density, double mass, double smoothingLength,
+                          const ParticleVec &pos, const ParticleVec &vel,
+                          std::source_location loc = std::source_location::current());
+
+/// Runs the simulation: init kernels, then max_iterations iterations, writing
+/// output as the program options ask. Exits the program with a message on error.
+void start();
+
+} // namespace wash
+
+// Program options. The runtime strips the wash options (--steps, --out, ...;
+// see --help) from argv before the simulation's own `main` sees it: the wash
+// targets link with `-Wl,--wrap=main`, so the runtime's __wrap_main runs first
+// and calls the simulation's main with what is left.

@@ -1,0 +1,48 @@
+#include <wash/detail/frame.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace wash::detail {
+
+std::vector<std::size_t> Frame::orderById() const {
+  std::vector<std::size_t> order(ids.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+  return order;
+}
+
+std::vector<std::string> csvHeaders(const Column &column) {
+  if (column.components == 1)
+    return {column.name};
+  static const char axes[] = {'x', 'y', 'z'};
+  std::vector<std::string> names;
+  for (int c = 0; c < column.components; ++c) {
+    if (column.name == "pos")
+      names.push_back(std::string(1, axes[c]));
+    else if (column.name == "vel")
+      names.push_back(std::string("v") + axes[c]);
+    else
+      names.push_back(column.name + "_" + axes[c]);
+  }
+  return names;
+}
+
+std::string findNonFinite(const Frame &frame) {
+  for (const Column &column : frame.columns) {
+    for (std::size_t k = 0; k < column.values.size(); ++k) {
+      if (std::isfinite(column.values[k]))
+        continue;
+      std::ostringstream msg;
+      std::size_t row = k / column.components;
+      msg << "field '" << column.name << "' of particle " << frame.ids[row] << " is "
+          << column.values[k];
+      return msg.str();
+    }
+  }
+  return "";
+}
+
+} // namespace wash::detail

@@ -1,0 +1,105 @@
+#include <wash/detail/options.hpp>
+
+#include <charconv>
+#include <cstring>
+
+namespace wash::detail {
+namespace {
+
+std::uint64_t parseCount(const std::string &option, const std::string &text) {
+  std::uint64_t value = 0;
+  const char *end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end)
+    throw OptionError("option '" + option + "' expects a non-negative integer, got '" + text +
+                      "'");
+  return value;
+}
+
+OutputFormat parseFormat(const std::string &text) {
+  if (text == "vtk")
+    return OutputFormat::Vtk;
+  if (text == "csv")
+    return OutputFormat::Csv;
+  throw OptionError("option '--format' expects 'vtk' or 'csv', got '" + text + "'");
+}
+
+bool takesValue(const std::string &name) {
+  return name == "--steps" || name == "--out" || name == "--output-every" ||
+         name == "--format" || name == "--dump";
+}
+
+void apply(RunOptions &o, const std::string &name, const std::string &value) {
+  if (name == "--steps")
+    o.steps = parseCount(name, value);
+  else if (name == "--out")
+    o.outDir = value;
+  else if (name == "--output-every")
+    o.outputEvery = parseCount(name, value);
+  else if (name == "--format")
+    o.format = parseFormat(value);
+  else if (name == "--dump")
+    o.dumpPath = value;
+  if (value.empty() && (name == "--out" || name == "--dump"))
+    throw OptionError("option '" + name + "' expects a path");
+}
+
+} // namespace
+
+ParsedArgs parseProgramOptions(int argc, char **argv) {
+  ParsedArgs parsed;
+  if (argc > 0)
+    parsed.userArgv.push_back(argv[0]);
+  bool passThrough = false;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (passThrough || arg.rfind("--", 0) != 0 || arg == "-") {
+      parsed.userArgv.push_back(argv[i]);
+      continue;
+    }
+    if (arg == "--") {
+      passThrough = true;
+      continue;
+    }
+    std::string name = arg, value;
+    bool inlineValue = false;
+    if (auto eq = arg.find('='); eq != std::string::npos) {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+      inlineValue = true;
+    }
+    if (name == "--quiet" || name == "--help") {
+      if (inlineValue)
+        throw OptionError("option '" + name + "' takes no value");
+      (name == "--quiet" ? parsed.options.quiet : parsed.options.help) = true;
+    } else if (takesValue(name)) {
+      if (!inlineValue) {
+        if (i + 1 >= argc)
+          throw OptionError("option '" + name + "' expects a value");
+        value = argv[++i];
+      }
+      apply(parsed.options, name, value);
+    } else {
+      throw OptionError("unknown option '" + arg +
+                        "' (see --help; put simulation arguments after '--')");
+    }
+  }
+  parsed.userArgv.push_back(nullptr);
+  return parsed;
+}
+
+std::string usageText(const std::string &program) {
+  return "usage: " + program + " [wash options] [simulation arguments]\n"
+         "\n"
+         "wash options (removed before the simulation's main sees argv):\n"
+         "  --steps N          run N iterations (overrides set_max_iterations)\n"
+         "  --out DIR          output directory (default: out)\n"
+         "  --output-every K   write a frame every K steps; 0 = final state only (default 0)\n"
+         "  --format vtk|csv   frame format: .vtp files plus a .pvd series, or .csv (default vtk)\n"
+         "  --dump FILE        write the final state as CSV, one row per particle sorted by id\n"
+         "  --quiet            no run header, progress line or summary\n"
+         "  --help             print this text and exit\n"
+         "  --                 pass everything after it to the simulation\n";
+}
+
+} // namespace wash::detail

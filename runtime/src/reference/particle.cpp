@@ -1,0 +1,65 @@
+//===- particle.cpp - Particle handles of the reference runtime --------===//
+#include "state.hpp"
+
+namespace wash {
+
+using detail::ParticleStore;
+using detail::state;
+
+std::size_t Particle::get_id() const { return store_->id[index_]; }
+
+ParticleVec Particle::get_pos() const { return store_->pos[index_]; }
+void Particle::set_pos(const ParticleVec &pos) { store_->pos[index_] = state().store(pos); }
+ParticleVec Particle::get_vel() const { return store_->vel[index_]; }
+void Particle::set_vel(const ParticleVec &vel) { store_->vel[index_] = state().store(vel); }
+ParticleVec Particle::get_acc() const { return store_->acc[index_]; }
+void Particle::set_acc(const ParticleVec &acc) { store_->acc[index_] = state().store(acc); }
+double Particle::get_density() const { return store_->density[index_]; }
+void Particle::set_density(double density) { store_->density[index_] = state().store(density); }
+double Particle::get_mass() const { return store_->mass[index_]; }
+void Particle::set_mass(double mass) { store_->mass[index_] = state().store(mass); }
+double Particle::get_smoothing_length() const { return store_->smoothingLength[index_]; }
+void Particle::set_smoothing_length(double h) {
+  store_->smoothingLength[index_] = state().store(h);
+}
+
+namespace {
+
+/// Column `slot` of `columns`, grown to the store's size (new entries zero).
+template <typename T>
+std::vector<T> &column(std::vector<std::vector<T>> &columns, std::size_t slot, std::size_t size) {
+  if (columns.size() <= slot)
+    columns.resize(slot + 1);
+  columns[slot].resize(size, T{});
+  return columns[slot];
+}
+
+/// Element `index` of column `slot`, or zero if that column was never written.
+template <typename T>
+T element(const std::vector<std::vector<T>> &columns, std::size_t slot, std::size_t index) {
+  if (slot >= columns.size() || index >= columns[slot].size())
+    return T{};
+  return columns[slot][index];
+}
+
+} // namespace
+
+double Particle::get_force_scalar(const std::string &name, Location loc) const {
+  return element(store_->scalars, state().force(name, false, loc).slot, index_);
+}
+
+void Particle::set_force_scalar(const std::string &name, double value, Location loc) {
+  std::size_t slot = state().force(name, false, loc).slot;
+  column(store_->scalars, slot, store_->size())[index_] = state().store(value);
+}
+
+ParticleVec Particle::get_force_vector(const std::string &name, Location loc) const {
+  return element(store_->vectors, state().force(name, true, loc).slot, index_);
+}
+
+void Particle::set_force_vector(const std::string &name, const ParticleVec &value, Location loc) {
+  std::size_t slot = state().force(name, true, loc).slot;
+  column(store_->vectors, slot, store_->size())[index_] = state().store(value);
+}
+
+} // namespace wash

@@ -1,0 +1,115 @@
+//===- run.cpp - wash::start() of the reference runtime ----------------===//
+//
+// The definition of what a wash program computes: init kernels once, then each
+// iteration every kernel in registration order, one particle at a time. A force
+// kernel's neighbours are handles into a snapshot taken when the kernel starts,
+// listed in the canonical order of neighbour_search.hpp.
+//
+//===----------------------------------------------------------------------===//
+#include "state.hpp"
+
+#include <wash/detail/neighbour_search.hpp>
+#include <wash/detail/progress.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace wash {
+
+using detail::Kernel;
+using detail::RunError;
+using detail::state;
+
+namespace {
+
+void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, double radius) {
+  detail::ParticleStore snapshot = live;
+  detail::CellList<dimensions> cells;
+  cells.build(snapshot.pos, snapshot.id, radius);
+  std::vector<std::size_t> indices;
+  std::vector<Particle> neighbours;
+  for (std::size_t i = 0; i < live.size(); ++i) {
+    cells.neighbours(i, indices);
+    neighbours.clear();
+    for (std::size_t j : indices)
+      neighbours.emplace_back(&snapshot, j); // const: read-only
+    Particle self(&live, i);
+    kernel(self, neighbours);
+  }
+}
+
+void runKernel(const Kernel &k, detail::State &s) {
+  switch (k.kind) {
+  case Kernel::Init:
+    s.inInitKernel = true;
+    reinterpret_cast<InitKernel>(k.function)();
+    s.inInitKernel = false;
+    break;
+  case Kernel::Update:
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      Particle self(&s.particles, i);
+      reinterpret_cast<UpdateKernel>(k.function)(self);
+    }
+    break;
+  case Kernel::ForceKind:
+    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, *s.influenceRadius);
+    break;
+  }
+}
+
+void checkFinite(const detail::State &s, std::uint64_t step, const Kernel &k) {
+  std::string bad = detail::findNonFinite(s.frame(s.particles));
+  if (!bad.empty())
+    throw RunError("step " + std::to_string(step) + ": after kernel '" + k.name + "': " + bad);
+}
+
+} // namespace
+
+void start() {
+  auto &s = state();
+  if (s.started)
+    throw RunError("start() was called twice");
+  s.started = true;
+  if (!s.influenceRadius)
+    throw RunError("no influence radius: call wash::set_influence_radius before start()");
+  std::uint64_t steps = s.options.steps ? *s.options.steps : s.maxIterations.value_or(0);
+  if (!s.options.steps && !s.maxIterations)
+    throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
+  std::string base = s.outputFileName.empty() ? s.simulationName : s.outputFileName;
+  detail::RunOutput output(s.options, base);
+
+  for (const Kernel &k : s.kernels)
+    if (k.kind == Kernel::Init) {
+      runKernel(k, s);
+      checkFinite(s, 0, k);
+    }
+  const bool talk = !s.options.quiet;
+  if (talk)
+    std::printf("wash reference: '%s', %zu particles, %dD, %s, influence radius %g, %llu steps\n",
+                s.simulationName.c_str(), s.particles.size(), dimensions,
+                s.useFloat ? "float" : "double", *s.influenceRadius, (unsigned long long)steps);
+  std::fflush(stdout);
+  if (output.frameDue(0, steps))
+    output.writeFrame(0, s.frame(s.particles));
+
+  detail::Progress progress(steps, s.particles.size(), talk);
+  for (std::uint64_t step = 1; step <= steps; ++step) {
+    for (const Kernel &k : s.kernels)
+      if (k.kind != Kernel::Init) {
+        runKernel(k, s);
+        checkFinite(s, step, k);
+      }
+    if (output.frameDue(step, steps))
+      output.writeFrame(step, s.frame(s.particles));
+    progress.update(step);
+  }
+  double seconds = progress.finish();
+  output.finish(s.frame(s.particles));
+  if (talk)
+    std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); output in %s\n",
+                (unsigned long long)steps, s.particles.size(), seconds,
+                seconds > 0 ? double(steps) * double(s.particles.size()) / seconds : 0.0,
+                output.directory().c_str());
+}
+
+} // namespace wash

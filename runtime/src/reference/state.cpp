@@ -1,0 +1,91 @@
+#include "state.hpp"
+
+#include <algorithm>
+
+namespace wash::detail {
+
+State &state() {
+  static State s;
+  return s;
+}
+
+void usageError(const std::source_location &loc, const std::string &message) {
+  throw UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ":" +
+                   std::to_string(loc.column()) + ": error: " + message);
+}
+
+// Out of line on purpose: g++ 12 at -O2, inlining this into the vector
+// overload, vectorised the pair of round trips into a plain copy (the rounding
+// was lost). Kept as a call, each conversion happens.
+double State::store(double v) const { return useFloat ? double(float(v)) : v; }
+
+const Force &State::force(const std::string &name, bool isVector, const std::source_location &loc) {
+  for (const Force &f : forces) {
+    if (f.name != name)
+      continue;
+    if (f.isVector != isVector)
+      usageError(loc, "force '" + name + "' is a " + (f.isVector ? "vector" : "scalar") +
+                          " but is used here as a " + (isVector ? "vector" : "scalar"));
+    return f;
+  }
+  if (name.empty())
+    usageError(loc, "force name is empty");
+  Force f{name, isVector, false, 0};
+  f.slot = std::count_if(forces.begin(), forces.end(),
+                         [&](const Force &g) { return g.isVector == isVector; });
+  forces.push_back(f);
+  return forces.back();
+}
+
+namespace {
+
+void addScalar(Frame &frame, const std::string &name, const std::vector<double> &values,
+               std::size_t n) {
+  Column column{name, 1, std::vector<double>(n, 0.0)};
+  std::copy_n(values.begin(), std::min(n, values.size()), column.values.begin());
+  frame.columns.push_back(std::move(column));
+}
+
+void addVector(Frame &frame, const std::string &name, const std::vector<ParticleVec> &values,
+               std::size_t n) {
+  Column column{name, dimensions, std::vector<double>(n * dimensions, 0.0)};
+  for (std::size_t p = 0; p < std::min(n, values.size()); ++p)
+    for (int k = 0; k < dimensions; ++k)
+      column.values[p * dimensions + k] = values[p].at(k);
+  frame.columns.push_back(std::move(column));
+}
+
+} // namespace
+
+Frame State::frame(const ParticleStore &store) const {
+  const std::size_t n = store.size();
+  Frame frame;
+  frame.dimensions = dimensions;
+  frame.ids = store.id;
+  addVector(frame, "pos", store.pos, n);
+  addVector(frame, "vel", store.vel, n);
+  addScalar(frame, "density", store.density, n);
+  addScalar(frame, "mass", store.mass, n);
+  addScalar(frame, "smoothing_length", store.smoothingLength, n);
+  std::vector<const Force *> order;
+  for (const Force &f : forces)
+    order.push_back(&f);
+  std::stable_sort(order.begin(), order.end(), [](const Force *a, const Force *b) {
+    if (a->registered != b->registered)
+      return a->registered;
+    return !a->registered && a->name < b->name;
+  });
+  static const std::vector<double> noScalars;
+  static const std::vector<ParticleVec> noVectors;
+  for (const Force *f : order) {
+    if (f->isVector)
+      addVector(frame, f->name, f->slot < store.vectors.size() ? store.vectors[f->slot] : noVectors,
+                n);
+    else
+      addScalar(frame, f->name, f->slot < store.scalars.size() ? store.scalars[f->slot] : noScalars,
+                n);
+  }
+  return frame;
+}
+
+} // namespace wash::detail

@@ -1,0 +1,80 @@
+//===- state.hpp - the reference runtime's particles and settings -*- C++ -*-===//
+//
+// Internal to the reference runtime. Particles live in one store, column by
+// column; a Particle is (store, index), so a force kernel's neighbours are
+// handles into a snapshot copy of the store taken when the kernel starts.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/detail/frame.hpp>
+#include <wash/detail/run_output.hpp>
+#include <wash/wash.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <source_location>
+#include <string>
+#include <vector>
+
+namespace wash::detail {
+
+struct ParticleStore {
+  std::vector<std::uint64_t> id;
+  std::vector<ParticleVec> pos, vel, acc;
+  std::vector<double> density, mass, smoothingLength;
+  /// Force columns by slot; a column shorter than the store reads as zeros.
+  std::vector<std::vector<double>> scalars;
+  std::vector<std::vector<ParticleVec>> vectors;
+
+  std::size_t size() const { return id.size(); }
+};
+
+struct Force {
+  std::string name;
+  bool isVector = false;
+  bool registered = false; ///< by add_force, rather than created on first use
+  std::size_t slot = 0;    ///< column in ParticleStore::scalars or ::vectors
+};
+
+struct Kernel {
+  enum Kind { Init, Update, ForceKind } kind;
+  void *function;
+  std::string name; ///< from the symbol table, for messages
+};
+
+/// Everything a reference run knows. One per program.
+struct State {
+  bool useFloat = false;
+  std::optional<double> influenceRadius;
+  std::string simulationName = "wash";
+  std::string outputFileName;
+  std::optional<std::uint64_t> maxIterations;
+  std::vector<Force> forces;
+  std::vector<Kernel> kernels;
+  ParticleStore particles;
+  bool inInitKernel = false;
+  bool started = false;
+  RunOptions options;
+
+  /// Storage rounding: the stored value of v under the chosen precision.
+  double store(double v) const;
+  ParticleVec store(ParticleVec v) const {
+    for (int k = 0; k < dimensions; ++k)
+      *v[k] = store(v.at(k));
+    return v;
+  }
+
+  /// The force `name` as a scalar or vector, created on first use.
+  const Force &force(const std::string &name, bool isVector, const std::source_location &loc);
+  /// Columns in output order: pos, vel, density, mass, smoothing_length, then
+  /// forces registered with add_force in that order, then created ones by name.
+  Frame frame(const ParticleStore &store) const;
+};
+
+State &state();
+
+/// A misuse of the API, reported at the caller's source location.
+[[noreturn]] void usageError(const std::source_location &loc, const std::string &message);
+
+} // namespace wash::detail

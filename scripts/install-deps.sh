@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages wash needs to build, test and render pictures.
+# Idempotent: packages already present are skipped, so the test command can call it every time.
+set -euo pipefail
+
+LLVM=19
+packages=(
+  build-essential cmake ninja-build git python3
+  # LLVM/Clang 19: find_package(Clang) fails unless every file its export sets name exists.
+  clang-$LLVM clang-tools-$LLVM clang-tidy-$LLVM clang-format-$LLVM clangd-$LLVM
+  libclang-$LLVM-dev libclang-cpp$LLVM-dev llvm-$LLVM-dev llvm-$LLVM-tools llvm-$LLVM-linker-tools
+  libpolly-$LLVM-dev
+  libgtest-dev libopenmpi-dev openmpi-bin
+  python3-numpy python3-matplotlib
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO=sudo
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

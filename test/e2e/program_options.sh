@@ -1,0 +1,44 @@
+# The wash program options, as the reference build of the seed example sees them.
+. "$(dirname "$0")/lib.sh"
+sim=$1
+
+expect_exit 0 "$sim" --help
+expect_in out.txt "--output-every K"
+[ ! -e out ] || fail "--help wrote output"
+
+# Options are removed from argv: the seed reads argv[1] and argv[2] as names.
+expect_exit 0 "$sim" myrun --steps 10 frames --out o1 --output-every 4 --format csv
+for step in 000000 000004 000008 000010; do
+  [ -f "o1/frames_$step.csv" ] || fail "missing o1/frames_$step.csv"
+done
+[ ! -e o1/frames_000005.csv ] || fail "unexpected frame 5"
+expect_in out.txt "'myrun', 4032 particles, 2D, double"
+expect_in out.txt "10 steps"
+
+# VTK: .vtp frames plus a .pvd series; final state only by default.
+expect_exit 0 "$sim" --steps=3 --out o2
+[ -f o2/serial_test_000003.vtp ] || fail "missing final .vtp"
+expect_in o2/serial_test.pvd 'file="serial_test_000003.vtp"'
+[ "$(ls o2 | wc -l)" -eq 2 ] || fail "expected only the final frame and the series"
+
+# --dump matches the final CSV frame; --quiet prints only what the simulation prints.
+expect_exit 0 "$sim" --steps 2 --out o3 --format csv --dump d.csv --quiet
+cmp -s d.csv o3/serial_test_000002.csv || fail "--dump differs from the final frame"
+head -1 d.csv | grep -qx 'id,x,y,vx,vy,density,mass,smoothing_length,nearDensity,predictedPosition_x,predictedPosition_y,pressure_x,pressure_y,position_x,position_y,viscosity_x,viscosity_y' \
+  || fail "dump header: $(head -1 d.csv)"
+grep -q "wash" out.txt && fail "--quiet still printed the run header"
+
+# Bad options: a message and exit status 2, before the simulation runs.
+expect_exit 2 "$sim" --steps many
+expect_in out.txt "option '--steps' expects a non-negative integer, got 'many'"
+expect_exit 2 "$sim" --format png
+expect_in out.txt "'vtk' or 'csv'"
+expect_exit 2 "$sim" --bogus
+expect_in out.txt "unknown option '--bogus'"
+grep -q "Calculated Time Step" out.txt && fail "the simulation ran despite a bad option"
+
+# An unusable output directory fails before the run, with a message.
+touch blocker
+expect_exit 1 "$sim" --steps 1 --out blocker/sub
+expect_in out.txt "error: cannot create output directory 'blocker/sub'"
+echo "program options: ok"

@@ -1,0 +1,159 @@
+// The reference runtime's semantics (docs/semantics.md), checked on small scenes.
+// Built once for 2D and once for 3D.
+#include "state.hpp"
+
+#include <wash/wash.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+using namespace wash;
+using detail::state;
+
+namespace {
+
+ParticleVec along(double x) {
+  ParticleVec v;
+  *v[0] = x;
+  return v;
+}
+
+/// Fresh runtime state with output going to a temporary directory.
+struct ReferenceTest : ::testing::Test {
+  std::filesystem::path out = std::filesystem::temp_directory_path() /
+                              ("wash-reference-test-" + std::to_string(WASH_DIM) + "d");
+  void SetUp() override {
+    state() = detail::State{};
+    state().options.quiet = true;
+    state().options.outDir = out.string();
+    state().options.steps = 1;
+    set_influence_radius(0.6);
+  }
+  void TearDown() override { std::filesystem::remove_all(out); }
+};
+
+std::vector<double> velocitiesX() {
+  std::vector<double> v;
+  for (const ParticleVec &p : state().particles.vel)
+    v.push_back(p.at(0));
+  return v;
+}
+
+void threeInALine() {
+  for (int k = 0; k < 3; ++k)
+    create_particle(1.0, 1.0, 0.5, along(0.5 * k), along(k + 1.0));
+}
+
+} // namespace
+
+TEST_F(ReferenceTest, ForceKernelReadsNeighboursAsOfItsStart) {
+  add_init_kernel(&threeInALine);
+  // Writes its own velocity and reads its neighbours' velocities: a hazard.
+  add_force_kernel([](Particle &p, const std::vector<Particle> &neighbours) {
+    for (const Particle &n : neighbours)
+      p.set_vel(p.get_vel() + n.get_vel());
+  });
+  start();
+  // From the initial 1, 2, 3 whatever the processing order: 1+2, 2+1+3, 3+2.
+  EXPECT_EQ(velocitiesX(), (std::vector<double>{3.0, 6.0, 5.0}));
+}
+
+TEST_F(ReferenceTest, ParticleSeesItsOwnWritesAtOnce) {
+  add_init_kernel(&threeInALine);
+  add_force_kernel([](Particle &p, const std::vector<Particle> &) {
+    p.set_density(p.get_density() + 1.0);
+    p.set_mass(p.get_density() * 2.0);
+  });
+  start();
+  EXPECT_EQ(state().particles.mass[1], 4.0);
+}
+
+TEST_F(ReferenceTest, NeighboursAreOtherParticlesWithinTheRadiusInCanonicalOrder) {
+  static std::vector<std::vector<std::size_t>> seen;
+  seen.clear();
+  add_init_kernel([] {
+    // Created right to left, so creation order is not spatial order.
+    for (double x : {0.85, 0.3, 0.0, 0.5})
+      create_particle(1.0, 1.0, 0.5, along(x), {});
+  });
+  add_force_kernel([](Particle &p, const std::vector<Particle> &neighbours) {
+    seen.resize(4);
+    for (const Particle &n : neighbours)
+      seen[p.get_id()].push_back(n.get_id());
+  });
+  start();
+  // Cells of size 0.6: x = 0.0, 0.3, 0.5 in cell 0, 0.85 in cell 1; ids inside a cell ascending.
+  EXPECT_EQ(seen[2], (std::vector<std::size_t>{1, 3}));    // x=0.0: 0.3, 0.5 (0.85 too far)
+  EXPECT_EQ(seen[1], (std::vector<std::size_t>{2, 3, 0})); // x=0.3: cell 0 by id, then cell 1
+  EXPECT_EQ(seen[0], (std::vector<std::size_t>{1, 3}));
+}
+
+TEST_F(ReferenceTest, UnregisteredForcesAreCreatedOnFirstUseAndOutputAfterRegisteredOnes) {
+  add_force("zeta", 1);
+  add_force("alpha", dimensions);
+  add_init_kernel([] {
+    Particle &p = create_particle(1.0, 1.0, 0.5, {}, {});
+    p.set_force_scalar("yankee", 2.0);
+    EXPECT_EQ(p.get_force_vector("bravo"), ParticleVec{}); // read before any write: zero
+  });
+  start();
+  std::vector<std::string> names;
+  for (const auto &c : state().frame(state().particles).columns)
+    names.push_back(c.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"pos", "vel", "density", "mass", "smoothing_length",
+                                             "zeta", "alpha", "bravo", "yankee"}));
+}
+
+TEST_F(ReferenceTest, ANameUsedAsScalarAndVectorIsAnErrorAtTheUse) {
+  add_force("nearDensity", 1);
+  add_init_kernel([] {
+    Particle &p = create_particle(1.0, 1.0, 0.5, {}, {});
+    p.get_force_vector("nearDensity");
+  });
+  try {
+    start();
+    FAIL() << "no error";
+  } catch (const detail::UsageError &e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("reference_test.cpp:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("error: force 'nearDensity' is a scalar but is used here as a vector"),
+              std::string::npos)
+        << msg;
+  }
+}
+
+TEST_F(ReferenceTest, FloatPrecisionRoundsEveryStoredValue) {
+  set_precision("float");
+  add_init_kernel([] { create_particle(0.1, 1.0 / 3.0, 0.5, along(0.7), {}); });
+  start();
+  EXPECT_EQ(state().particles.density[0], double(0.1f));
+  EXPECT_EQ(state().particles.mass[0], double(1.0f / 3.0f));
+  EXPECT_EQ(state().particles.pos[0].at(0), double(0.7f));
+}
+
+TEST_F(ReferenceTest, NonFiniteStateStopsTheRunNamingStepKernelAndField) {
+  add_init_kernel(&threeInALine);
+  add_update_kernel([](Particle &p) { p.set_density(p.get_density() / (p.get_id() == 1 ? 0.0 : 1.0) - 1.0 / 0.0 ); });
+  state().options.steps = 3;
+  try {
+    start();
+    FAIL() << "no error";
+  } catch (const detail::RunError &e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("step 1: after kernel '"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("field 'density' of particle 0 is -inf"), std::string::npos) << msg;
+  }
+}
+
+TEST_F(ReferenceTest, CreatingParticlesOutsideInitKernelsIsAnError) {
+  EXPECT_THROW(create_particle(1.0, 1.0, 0.5, {}, {}), detail::UsageError);
+}
+
+TEST_F(ReferenceTest, BadSettingsAreErrors) {
+  EXPECT_THROW(set_precision("half"), detail::UsageError);
+  EXPECT_THROW(set_influence_radius(-1.0), detail::UsageError);
+  EXPECT_THROW(add_force("f", 4), detail::UsageError);
+  add_force("f", 1);
+  EXPECT_THROW(add_force("f", 1), detail::UsageError);
+}

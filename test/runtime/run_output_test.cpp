@@ -1,0 +1,101 @@
+#include <wash/detail/run_output.hpp>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace wash::detail;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempDir {
+  fs::path path = fs::temp_directory_path() /
+                  ("wash-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                   "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::remove_all(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+Frame tinyFrame() {
+  Frame f;
+  f.ids = {0};
+  f.columns.push_back({"pos", 2, {1.0, 2.0}});
+  return f;
+}
+
+std::string slurp(const fs::path &p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+} // namespace
+
+TEST(RunOutput, FinalStateOnlyByDefault) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = (dir.path / "nested" / "out").string();
+  RunOutput out(o, "sim");
+  EXPECT_TRUE(fs::is_directory(o.outDir)); // created, nested
+  EXPECT_FALSE(out.frameDue(0, 10));
+  EXPECT_FALSE(out.frameDue(5, 10));
+  EXPECT_TRUE(out.frameDue(10, 10));
+}
+
+TEST(RunOutput, EveryKStepsPlusFirstAndLast) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = dir.path.string();
+  o.outputEvery = 4;
+  RunOutput out(o, "sim");
+  std::vector<std::uint64_t> due;
+  for (std::uint64_t s = 0; s <= 10; ++s)
+    if (out.frameDue(s, 10))
+      due.push_back(s);
+  EXPECT_EQ(due, (std::vector<std::uint64_t>{0, 4, 8, 10}));
+}
+
+TEST(RunOutput, WritesFramesSeriesAndDump) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = dir.path.string();
+  o.dumpPath = (dir.path / "dump.csv").string();
+  RunOutput out(o, "sim");
+  out.writeFrame(0, tinyFrame());
+  out.writeFrame(7, tinyFrame());
+  out.finish(tinyFrame());
+  EXPECT_TRUE(fs::exists(dir.path / "sim_000000.vtp"));
+  EXPECT_TRUE(fs::exists(dir.path / "sim_000007.vtp"));
+  EXPECT_NE(slurp(dir.path / "sim.pvd").find("sim_000007.vtp"), std::string::npos);
+  EXPECT_EQ(slurp(dir.path / "dump.csv"), "id,x,y\n0,1,2\n");
+}
+
+TEST(RunOutput, CsvFormatWritesCsvFrames) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = dir.path.string();
+  o.format = OutputFormat::Csv;
+  RunOutput out(o, "sim");
+  out.writeFrame(3, tinyFrame());
+  out.finish(tinyFrame());
+  EXPECT_EQ(slurp(dir.path / "sim_000003.csv"), "id,x,y\n0,1,2\n");
+  EXPECT_FALSE(fs::exists(dir.path / "sim.pvd"));
+}
+
+TEST(RunOutput, UnusableDirectoryIsAClearError) {
+  TempDir dir;
+  fs::create_directories(dir.path);
+  std::ofstream(dir.path / "file") << "x";
+  RunOptions o;
+  o.outDir = (dir.path / "file" / "sub").string();
+  try {
+    RunOutput out(o, "sim");
+    FAIL() << "no error";
+  } catch (const RunError &e) {
+    EXPECT_NE(std::string(e.what()).find("cannot create output directory"), std::string::npos);
+  }
+}
