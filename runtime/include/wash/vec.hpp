@@ -30,6 +30,13 @@ public:
             typename = std::enable_if_t<sizeof...(C) == D && (std::is_arithmetic_v<C> && ...)>>
   constexpr Vec(C... components) : data_{static_cast<T>(components)...} {}
 
+  /// Conversion between component types (float storage <-> double arithmetic).
+  template <typename U>
+  explicit constexpr Vec(const Vec<U, D> &other) : data_{} {
+    for (int i = 0; i < D; ++i)
+      data_[i] = static_cast<T>(other.at(i));
+  }
+
   /// Component i by value.
   constexpr T at(int i) const { return data_[i]; }
   /// Pointer to component i, so that `*(v[0]) = 1.0` writes the component.

@@ -11,6 +11,8 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/math.hpp>
+#include <wash/settings.hpp>
 #include <wash/vec.hpp>
 
 #include <cstddef>
@@ -22,15 +24,6 @@
 #ifndef WASH_DIM
 #define WASH_DIM 2
 #endif
-
-/// pi, for simulations that spell it `PI`.
-inline constexpr double PI = 3.14159265358979323846;
-
-/// Time step of an animation at 60 frames per second, split into
-/// `iterationsPerFrame` iterations and scaled by `timeScale`.
-constexpr double TIME_DELTA(double timeScale, double iterationsPerFrame) {
-  return (1.0 / 60.0) / iterationsPerFrame * timeScale;
-}
 
 namespace wash {
 
@@ -84,18 +77,6 @@ private:
 using InitKernel = void (*)();
 using UpdateKernel = void (*)(Particle &);
 using ForceKernel = void (*)(Particle &, const std::vector<Particle> &);
-
-/// Storage precision of every particle property: "double" or "float".
-void set_precision(const std::string &precision,
-                   std::source_location loc = std::source_location::current());
-/// Neighbours of a particle are the other particles within this distance.
-void set_influence_radius(double radius,
-                          std::source_location loc = std::source_location::current());
-void set_simulation_name(const std::string &name);
-/// Base name of output files (default: the simulation name).
-void set_output_file_name(const std::string &name);
-/// Number of iterations start() runs (the --steps option overrides it).
-void set_max_iterations(std::uint64_t iterations);
 
 /// Registers a named property: dim 1 is a scalar, dim == WASH_DIM a vector.
 void add_force(const std::string &name, int dim,

@@ -1,0 +1,128 @@
+//===- wash/backend/cell_grid.hpp - cell-sorted particles and neighbour ranges -*- C++ -*-===//
+//
+// The canonical neighbour order of docs/semantics.md, without sorting per
+// particle: particles are kept sorted by (cell, id), cells in (z,) y, x order
+// of a dense grid over the occupied cells, so the candidates of one row of the
+// stencil are one contiguous index range, already in canonical order.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/columns.hpp>
+#include <wash/vec.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace wash::backend {
+
+/// The candidates of one particle: up to 4^(D-1) contiguous index ranges.
+struct CandidateRanges {
+  static constexpr int capacity = 16;
+  std::array<Index, capacity> begin, end;
+  int count = 0;
+};
+
+template <int D> class CellGrid {
+public:
+  /// Sorts particles by (cell, id) for radius r: fills `order` (new[k] =
+  /// old[order[k]]) and the cell table for the new order. Positions are read
+  /// as double, whatever the storage precision.
+  template <typename PosT>
+  void sort(const Column<PosT> &pos, const Column<std::uint64_t> &id, double r,
+            std::vector<Index> &order) {
+    const std::size_t n = pos.size();
+    if (n > std::numeric_limits<Index>::max())
+      throw std::length_error("wash: more particles than the index type holds");
+    radius_ = r;
+    cell_.resize(n);
+    std::array<std::int64_t, D> lo, hi;
+    lo.fill(std::numeric_limits<std::int64_t>::max());
+    hi.fill(std::numeric_limits<std::int64_t>::min());
+    coords_.resize(n);
+    for (std::size_t p = 0; p < n; ++p)
+      for (int a = 0; a < D; ++a) {
+        std::int64_t c = coordinate(double(pos[p].at(a)));
+        coords_[p][a] = c;
+        lo[a] = std::min(lo[a], c);
+        hi[a] = std::max(hi[a], c);
+      }
+    std::size_t cells = 1;
+    for (int a = 0; a < D; ++a) {
+      lo_[a] = n ? lo[a] : 0;
+      dims_[a] = n ? hi[a] - lo[a] + 1 : 1;
+      cells *= std::size_t(dims_[a]);
+    }
+    for (std::size_t p = 0; p < n; ++p)
+      cell_[p] = linear(coords_[p]);
+    // Counting sort by cell (stable), then ids ascending inside each cell.
+    cellStart_.assign(cells + 1, 0);
+    for (std::size_t p = 0; p < n; ++p)
+      ++cellStart_[cell_[p] + 1];
+    for (std::size_t c = 0; c < cells; ++c)
+      cellStart_[c + 1] += cellStart_[c];
+    order.resize(n);
+    fill_ = std::vector<Index>(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::size_t p = 0; p < n; ++p)
+      order[fill_[cell_[p]]++] = Index(p);
+    for (std::size_t c = 0; c < cells; ++c)
+      std::sort(order.begin() + cellStart_[c], order.begin() + cellStart_[c + 1],
+                [&](Index a, Index b) { return id[a] < id[b]; });
+  }
+
+  /// Candidate ranges for a particle at p: the cells overlapping [p - r, p + r]
+  /// on each axis, in canonical order (the reference's cell set exactly).
+  void candidates(const Vec<double, D> &p, CandidateRanges &out) const {
+    std::array<std::int64_t, D> from, to;
+    for (int a = 0; a < D; ++a) {
+      from[a] = std::max(coordinate(p.at(a) - radius_), lo_[a]);
+      to[a] = std::min(coordinate(p.at(a) + radius_), lo_[a] + dims_[a] - 1);
+    }
+    out.count = 0;
+    if constexpr (D == 2) {
+      for (std::int64_t y = from[1]; y <= to[1]; ++y)
+        addRow(out, {from[0], y}, to[0]);
+    } else {
+      for (std::int64_t z = from[2]; z <= to[2]; ++z)
+        for (std::int64_t y = from[1]; y <= to[1]; ++y)
+          addRow(out, {from[0], y, z}, to[0]);
+    }
+  }
+
+  double radius() const { return radius_; }
+
+private:
+  std::int64_t coordinate(double x) const {
+    return static_cast<std::int64_t>(std::floor(x / radius_));
+  }
+  std::size_t linear(const std::array<std::int64_t, D> &c) const {
+    std::size_t index = 0;
+    for (int a = D - 1; a >= 0; --a)
+      index = index * std::size_t(dims_[a]) + std::size_t(c[a] - lo_[a]);
+    return index;
+  }
+  void addRow(CandidateRanges &out, std::array<std::int64_t, D> first, std::int64_t lastX) const {
+    if (first[0] > lastX)
+      return;
+    std::size_t start = linear(first);
+    Index b = cellStart_[start], e = cellStart_[start + std::size_t(lastX - first[0]) + 1];
+    if (b < e) {
+      out.begin[out.count] = b;
+      out.end[out.count] = e;
+      ++out.count;
+    }
+  }
+
+  double radius_ = 1.0;
+  std::array<std::int64_t, D> lo_{}, dims_{};
+  std::vector<Index> cellStart_, fill_;
+  std::vector<std::size_t> cell_;
+  std::vector<std::array<std::int64_t, D>> coords_;
+};
+
+} // namespace wash::backend

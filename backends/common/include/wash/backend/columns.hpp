@@ -1,0 +1,28 @@
+//===- wash/backend/columns.hpp - structure-of-arrays storage -----*- C++ -*-===//
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace wash::backend {
+
+/// Particle index in the current storage order (which changes when particles
+/// are reordered by cell; the id does not).
+using Index = std::uint32_t;
+
+/// One property of every particle. Plain std::vector: contiguous, and
+/// operator[] compiles to a direct array access.
+template <typename T> using Column = std::vector<T>;
+
+/// Reorders `column` so that new[k] = old[order[k]], using `scratch` as spare
+/// storage of the same type (kept between calls to avoid reallocations).
+template <typename T>
+void permute(Column<T> &column, const std::vector<Index> &order, Column<T> &scratch) {
+  scratch.resize(column.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    scratch[k] = column[order[k]];
+  column.swap(scratch);
+}
+
+} // namespace wash::backend

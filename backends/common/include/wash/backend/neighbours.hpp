@@ -1,0 +1,80 @@
+//===- wash/backend/neighbours.hpp - particle handles and neighbour ranges -*- C++ -*-===//
+//
+// In generated code a kernel's `wash::Particle&` becomes a Self and its
+// `const std::vector<wash::Particle>&` a Neighbours range with the same
+// interface (range-for, size(), [k]); field accesses index columns with them.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/cell_grid.hpp>
+
+#include <vector>
+
+namespace wash::backend {
+
+/// The particle a kernel runs for.
+struct Self {
+  Index index;
+  constexpr operator Index() const { return index; }
+};
+
+/// A neighbour of the particle a force kernel runs for: read-only.
+struct NeighbourRef {
+  Index index;
+  constexpr operator Index() const { return index; }
+};
+
+/// The neighbours of one particle, in canonical order. Built when the kernel
+/// starts for that particle by walking the cell grid's candidate ranges and
+/// keeping, without branches, the other particles within the radius; the loops
+/// of the kernel and its helpers then run over that short list only. The list
+/// lives in a per-thread buffer: one Neighbours per thread at a time, which is
+/// how the generated drivers use it.
+template <int D, typename PosT> class Neighbours {
+public:
+  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self) {
+    const Vec<double, D> centre(pos[self]);
+    const double r2 = grid.radius() * grid.radius();
+    CandidateRanges ranges;
+    grid.candidates(centre, ranges);
+    std::size_t candidates = 0;
+    for (int r = 0; r < ranges.count; ++r)
+      candidates += ranges.end[r] - ranges.begin[r];
+    std::vector<NeighbourRef> &buffer = threadBuffer();
+    if (buffer.size() < candidates)
+      buffer.resize(candidates);
+    NeighbourRef *out = buffer.data();
+    std::size_t kept = 0;
+    const PosT *p = pos.data();
+    for (int r = 0; r < ranges.count; ++r)
+      for (Index j = ranges.begin[r]; j < ranges.end[r]; ++j) {
+        double d2 = 0.0;
+        for (int a = 0; a < D; ++a) {
+          double d = double(p[j].at(a)) - centre.at(a);
+          d2 += d * d;
+        }
+        out[kept].index = j;
+        kept += (j != self) & (d2 <= r2);
+      }
+    begin_ = out;
+    end_ = out + kept;
+  }
+
+  const NeighbourRef *begin() const { return begin_; }
+  const NeighbourRef *end() const { return end_; }
+  std::size_t size() const { return std::size_t(end_ - begin_); }
+  bool empty() const { return begin_ == end_; }
+  const NeighbourRef &operator[](std::size_t k) const { return begin_[k]; }
+
+private:
+  static std::vector<NeighbourRef> &threadBuffer() {
+    thread_local std::vector<NeighbourRef> buffer;
+    return buffer;
+  }
+
+  const NeighbourRef *begin_;
+  const NeighbourRef *end_;
+};
+
+} // namespace wash::backend

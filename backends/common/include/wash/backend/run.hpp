@@ -1,0 +1,102 @@
+//===- wash/backend/run.hpp - what a generated program's start() calls -*- C++ -*-===//
+//
+// The run around the generated kernels: settings and program options, run
+// header, frames and dump through the shared writers, progress, and the check
+// that every field a kernel wrote is finite.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/columns.hpp>
+#include <wash/detail/frame.hpp>
+#include <wash/detail/options.hpp>
+#include <wash/detail/progress.hpp>
+#include <wash/detail/run_output.hpp>
+#include <wash/vec.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace wash::backend {
+
+/// What the simulation's main configured through wash/settings.hpp.
+struct Settings {
+  std::optional<bool> useFloat;
+  std::optional<double> influenceRadius;
+  std::string simulationName = "wash";
+  std::string outputFileName;
+  std::optional<std::uint64_t> maxIterations;
+};
+Settings &settings();
+/// The program options __wrap_main found.
+detail::RunOptions &programOptions();
+
+class Run {
+public:
+  /// Checks the settings against what the program was translated for.
+  Run(const char *backend, int dimensions, bool translatedForFloat);
+  ~Run();
+
+  std::uint64_t steps() const { return steps_; }
+  double radius() const { return radius_; }
+
+  /// After the init kernels: prints the header, writes frame 0 if due.
+  template <typename FrameFn> void begin(std::size_t particles, FrameFn frame) {
+    started(particles);
+    if (output_->frameDue(0, steps_))
+      output_->writeFrame(0, frame());
+  }
+  /// After every kernel of a step.
+  template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
+    if (output_->frameDue(step, steps_))
+      output_->writeFrame(step, frame());
+    progress_->update(step);
+  }
+  void finish(const detail::Frame &finalFrame);
+
+  /// Stops the run if a value the kernel wrote is not finite.
+  template <typename T>
+  void checkFinite(const Column<T> &column, const Column<std::uint64_t> &ids, std::uint64_t step,
+                   const char *kernel, const char *field) const {
+    for (std::size_t p = 0; p < column.size(); ++p)
+      if (!finite(column[p]))
+        fail(step, kernel, field, ids[p], column[p]);
+  }
+
+private:
+  void started(std::size_t particles);
+  static bool finite(double v) { return std::isfinite(v); }
+  template <typename T, int D> static bool finite(const Vec<T, D> &v) {
+    for (int a = 0; a < D; ++a)
+      if (!std::isfinite(v.at(a)))
+        return false;
+    return true;
+  }
+  template <typename T> static double firstBad(const T &v) { return double(v); }
+  template <typename T, int D> static double firstBad(const Vec<T, D> &v) {
+    for (int a = 0; a < D; ++a)
+      if (!std::isfinite(v.at(a)))
+        return double(v.at(a));
+    return 0.0;
+  }
+  template <typename T>
+  [[noreturn]] void fail(std::uint64_t step, const char *kernel, const char *field,
+                         std::uint64_t id, const T &value) const {
+    failWith(step, kernel, field, id, firstBad(value));
+  }
+  [[noreturn]] void failWith(std::uint64_t step, const char *kernel, const char *field,
+                             std::uint64_t id, double value) const;
+
+  std::string backend_;
+  int dimensions_;
+  bool useFloat_;
+  std::uint64_t steps_ = 0;
+  double radius_ = 0.0;
+  std::unique_ptr<detail::RunOutput> output_;
+  std::unique_ptr<detail::Progress> progress_;
+};
+
+} // namespace wash::backend

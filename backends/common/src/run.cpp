@@ -1,0 +1,67 @@
+#include <wash/backend/run.hpp>
+
+#include <cstdio>
+#include <sstream>
+
+namespace wash::backend {
+
+Settings &settings() {
+  static Settings s;
+  return s;
+}
+
+detail::RunOptions &programOptions() {
+  static detail::RunOptions o;
+  return o;
+}
+
+Run::Run(const char *backend, int dimensions, bool translatedForFloat)
+    : backend_(backend), dimensions_(dimensions), useFloat_(translatedForFloat) {
+  const Settings &s = settings();
+  const detail::RunOptions &o = programOptions();
+  if (s.useFloat && *s.useFloat != translatedForFloat)
+    throw detail::RunError(std::string("this program was translated for ") +
+                           (translatedForFloat ? "float" : "double") +
+                           " precision, but main asked for " +
+                           (*s.useFloat ? "float" : "double"));
+  if (!s.influenceRadius)
+    throw detail::RunError("no influence radius: call wash::set_influence_radius before start()");
+  if (!o.steps && !s.maxIterations)
+    throw detail::RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
+  steps_ = o.steps ? *o.steps : *s.maxIterations;
+  radius_ = *s.influenceRadius;
+  output_ = std::make_unique<detail::RunOutput>(
+      o, s.outputFileName.empty() ? s.simulationName : s.outputFileName);
+}
+
+Run::~Run() = default;
+
+void Run::started(std::size_t particles) {
+  const bool talk = !programOptions().quiet;
+  if (talk)
+    std::printf("wash %s: '%s', %zu particles, %dD, %s, influence radius %g, %llu steps\n",
+                backend_.c_str(), settings().simulationName.c_str(), particles, dimensions_,
+                useFloat_ ? "float" : "double", radius_, (unsigned long long)steps_);
+  std::fflush(stdout);
+  progress_ = std::make_unique<detail::Progress>(steps_, particles, talk);
+}
+
+void Run::finish(const detail::Frame &finalFrame) {
+  double seconds = progress_->finish();
+  output_->finish(finalFrame);
+  if (!programOptions().quiet)
+    std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); output in %s\n",
+                (unsigned long long)steps_, finalFrame.size(), seconds,
+                seconds > 0 ? double(steps_) * double(finalFrame.size()) / seconds : 0.0,
+                output_->directory().c_str());
+}
+
+void Run::failWith(std::uint64_t step, const char *kernel, const char *field, std::uint64_t id,
+                   double value) const {
+  std::ostringstream msg;
+  msg << "step " << step << ": after kernel '" << kernel << "': field '" << field
+      << "' of particle " << id << " is " << value;
+  throw detail::RunError(msg.str());
+}
+
+} // namespace wash::backend

@@ -1,0 +1,32 @@
+// wash/settings.hpp for generated programs: the same checks as the reference.
+#include <wash/backend/run.hpp>
+#include <wash/settings.hpp>
+
+namespace wash {
+
+namespace {
+[[noreturn]] void usageError(const std::source_location &loc, const std::string &message) {
+  throw detail::UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ":" +
+                           std::to_string(loc.column()) + ": error: " + message);
+}
+} // namespace
+
+void set_precision(const std::string &precision, std::source_location loc) {
+  if (precision != "double" && precision != "float")
+    usageError(loc, "precision must be \"double\" or \"float\", not \"" + precision + "\"");
+  backend::settings().useFloat = precision == "float";
+}
+
+void set_influence_radius(double radius, std::source_location loc) {
+  if (!(radius > 0.0) || !std::isfinite(radius))
+    usageError(loc, "influence radius must be a positive number");
+  backend::settings().influenceRadius = radius;
+}
+
+void set_simulation_name(const std::string &name) { backend::settings().simulationName = name; }
+void set_output_file_name(const std::string &name) { backend::settings().outputFileName = name; }
+void set_max_iterations(std::uint64_t iterations) {
+  backend::settings().maxIterations = iterations;
+}
+
+} // namespace wash

@@ -1,0 +1,27 @@
+//===- wash/settings.hpp - run settings, shared by every runtime -*- C++ -*-===//
+//
+// The calls a simulation's main makes to configure a run. The reference
+// runtime and every backend runtime implement them with the same meaning.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <cstdint>
+#include <source_location>
+#include <string>
+
+namespace wash {
+
+/// Storage precision of every particle property: "double" or "float".
+void set_precision(const std::string &precision,
+                   std::source_location loc = std::source_location::current());
+/// Neighbours of a particle are the other particles within this distance.
+void set_influence_radius(double radius,
+                          std::source_location loc = std::source_location::current());
+void set_simulation_name(const std::string &name);
+/// Base name of output files (default: the simulation name).
+void set_output_file_name(const std::string &name);
+/// Number of iterations start() runs (the --steps option overrides it).
+void set_max_iterations(std::uint64_t iterations);
+
+} // namespace wash

@@ -1,0 +1,34 @@
+#include <wash/detail/entry.hpp>
+#include <wash/detail/run_output.hpp>
+
+#include <cstdio>
+#include <string>
+
+namespace wash::detail {
+
+int runProgram(int argc, char **argv, void (*takeOptions)(const RunOptions &),
+               int (*simulationMain)(int, char **)) {
+  std::string program = argc > 0 ? argv[0] : "wash";
+  try {
+    ParsedArgs parsed = parseProgramOptions(argc, argv);
+    if (parsed.options.help) {
+      std::fputs(usageText(program).c_str(), stdout);
+      return 0;
+    }
+    takeOptions(parsed.options);
+    return simulationMain(int(parsed.userArgv.size()) - 1, parsed.userArgv.data());
+  } catch (const OptionError &e) {
+    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+    return 2;
+  } catch (const UsageError &e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  } catch (const std::exception &e) {
+    std::fflush(stdout);
+    std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+    return 1;
+  }
+}
+
+} // namespace wash::detail
