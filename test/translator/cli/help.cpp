@@ -1,0 +1,5 @@
+// RUN: %wash --help | FileCheck %s
+// CHECK: wash [options] <simulation.cpp> [-- <compiler flags>]
+// CHECK: --backend=<value>
+// CHECK: --dump-model
+// CHECK: -o <dir>

@@ -1,0 +1,22 @@
+# lit configuration of the translator tests: test/translator/<stage>/*.cpp.
+import os
+import lit.formats
+
+config.name = "wash-translator"
+config.test_format = lit.formats.ShTest(execute_external=False)
+config.suffixes = [".cpp"]
+config.test_source_root = os.path.dirname(__file__)
+config.test_exec_root = config.wash_obj_root
+# Inputs/ holds files that tests include or run on; unit/ is GoogleTest.
+config.excludes = ["Inputs", "unit", "CMakeLists.txt"]
+
+config.substitutions.append(("%wash_src", config.wash_src_root))
+config.substitutions.append(("%wash", config.wash_bin))
+config.environment["PATH"] = os.pathsep.join(
+    [config.llvm_tools_dir, config.environment.get("PATH", os.environ.get("PATH", ""))])
+# Diagnostics without colour, and no locale-dependent messages.
+config.environment["TERM"] = "dumb"
+# %expect_exit N cmd: cmd must exit with N, never crash, and print nothing on
+# stdout when N != 0; its stderr and stdout are passed on for FileCheck.
+config.substitutions.insert(0, ("%expect_exit", "python3 " +
+    os.path.join(config.test_source_root, "Inputs", "expect_exit.py")))

@@ -1,0 +1,52 @@
+#include "wash/translator/Analysis/ResolveFields.h"
+#include "TestModels.h"
+
+#include <gtest/gtest.h>
+
+using namespace wash::tr;
+using namespace wash::tr::test;
+
+TEST(ResolveFields, CreatesUnregisteredForcesAtFirstUseInitFirst) {
+  Model M;
+  M.Kernels.push_back(
+      kernel(KernelKind::Update, "u", {force("heat", ForceKind::Scalar, Mode::Read, 20)}));
+  M.Kernels.push_back(
+      kernel(KernelKind::Init, "i", {force("heat", ForceKind::Scalar, Mode::Write, 10)}));
+  resolveFields(M);
+  const Field *F = M.findField("heat");
+  ASSERT_NE(F, nullptr);
+  EXPECT_EQ(F->Origin, FieldOrigin::Created);
+  EXPECT_EQ(F->Pos.Line, 10u);
+  ASSERT_EQ(M.Findings.size(), 1u);
+  EXPECT_EQ(M.Findings[0].Id, DiagId::ForceCreated);
+  EXPECT_EQ(M.Findings[0].Args, (std::vector<std::string>{"heat", "scalar"}));
+}
+
+TEST(ResolveFields, KindMismatchAgainstRegistrationIsAnErrorWithNote) {
+  Model M;
+  M.Sim.Dimension = 3;
+  M.Forces.push_back({"p", ForceKind::Vector, {"sim.cpp", 5, 19}});
+  M.Kernels.push_back(
+      kernel(KernelKind::Update, "u", {force("p", ForceKind::Scalar, Mode::Read, 9)}));
+  resolveFields(M);
+  EXPECT_EQ(M.findField("p")->Dim, 3u);
+  ASSERT_EQ(M.Findings.size(), 1u);
+  EXPECT_EQ(M.Findings[0].Id, DiagId::ForceKindMismatch);
+  EXPECT_EQ(M.Findings[0].Args, (std::vector<std::string>{"p", "vector", "scalar"}));
+  ASSERT_EQ(M.Findings[0].Notes.size(), 1u);
+  EXPECT_EQ(M.Findings[0].Notes[0].Id, DiagId::NoteRegisteredHere);
+  EXPECT_TRUE(M.hasErrors());
+}
+
+TEST(ResolveFields, BuiltinsComeFirstThenRegisteredThenCreated) {
+  Model M;
+  M.Forces.push_back({"b", ForceKind::Scalar, {}});
+  M.Kernels.push_back(
+      kernel(KernelKind::Update, "u", {force("a", ForceKind::Vector, Mode::Write, 1)}));
+  resolveFields(M);
+  std::vector<std::string> Names;
+  for (const Field &F : M.Fields)
+    Names.push_back(F.Name);
+  EXPECT_EQ(Names, (std::vector<std::string>{"id", "pos", "vel", "acc", "density", "mass",
+                                             "smoothing_length", "b", "a"}));
+}

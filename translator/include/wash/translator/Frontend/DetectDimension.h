@@ -1,0 +1,22 @@
+//===- DetectDimension.h - 2D or 3D -----------------------------*- C++ -*-===//
+#pragma once
+
+#include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Model.h"
+
+#include "clang/AST/ASTContext.h"
+#include "llvm/ADT/StringRef.h"
+
+namespace wash::tr {
+
+/// Before parsing: the dimension the source's vector types suggest (the
+/// first of Vec2D, Vec3D or Vec<..., N> among its tokens, comments skipped),
+/// or 2. The header needs WASH_DIM to match, so the driver defines it.
+unsigned guessDimension(llvm::StringRef Source);
+
+/// After parsing: sets Model::Sim.Dimension from the vector types the user's
+/// code spells (ParsedDim, the WASH_DIM it was parsed with, if it spells
+/// none). Mixing 2D and 3D vectors is an error. Returns false on error.
+bool detectDimension(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M);
+
+} // namespace wash::tr

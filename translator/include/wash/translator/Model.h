@@ -1,0 +1,127 @@
+//===- Model.h - what the translator knows about a simulation ---*- C++ -*-===//
+//
+// Plain data, no Clang types: the frontend fills it in from the AST, the
+// analysis and plan passes derive facts from it, and code generation will
+// read it. Everything here is testable without parsing C++.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include "wash/translator/Diagnostics.h"
+
+#include <cstdint>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace wash::tr {
+
+/// A setting whose value may be a constant or known only at run time.
+struct SettingValue {
+  std::string Text; ///< The constant ("0.35", "\"double\"") or the source text.
+  bool Constant = false;
+  SourcePos Pos;
+};
+
+struct Settings {
+  std::string Precision = "double"; ///< "double" (the default) or "float".
+  unsigned Dimension = 2;
+  std::optional<SettingValue> InfluenceRadius;
+  std::optional<SettingValue> MaxIterations;
+  /// Every value main may set, in source order (it may branch on argv).
+  std::vector<SettingValue> SimulationNames;
+  std::vector<SettingValue> OutputFileNames;
+  bool CallsStart = false;
+};
+
+enum class ForceKind { Scalar, Vector };
+const char *forceKindName(ForceKind K);
+
+/// A force registered with wash::add_force.
+struct ForceRegistration {
+  std::string Name;
+  ForceKind Kind = ForceKind::Scalar;
+  SourcePos Pos;
+};
+
+enum class KernelKind { Init, Update, Force };
+const char *kernelKindName(KernelKind K);
+
+/// Which particle an access touches, relative to the kernel's own particle.
+enum class Target { Own, Neighbour };
+enum class Mode { Read, Write };
+
+/// One property access found in a kernel (or a helper it calls). `Kind` is
+/// set for forces: it says whether the scalar or the vector accessor was used.
+struct Access {
+  std::string Field;
+  Target On = Target::Own;
+  Mode How = Mode::Read;
+  std::optional<ForceKind> Kind;
+  SourcePos Pos;
+  friend bool operator==(const Access &, const Access &) = default;
+};
+
+using FieldSet = std::set<std::string>;
+
+struct Kernel {
+  KernelKind Kind = KernelKind::Update;
+  std::string Function;
+  SourcePos Pos; ///< The registration call.
+  /// Raw accesses in the order the frontend met them (registration order of
+  /// kernels, then source order through calls): the first use of a force is
+  /// the first element that names it.
+  std::vector<Access> Accesses;
+
+  // Filled by summariseAccesses.
+  FieldSet OwnReads, OwnWrites, NeighbourReads;
+  // Filled by findHazards: own writes also read through neighbours.
+  FieldSet Hazards;
+  // Filled by planNeighbourSearch (force kernels only).
+  int SearchGroup = -1;
+  // Filled by planHalos (force kernels only): fields halo particles need.
+  FieldSet HaloFields;
+};
+
+enum class FieldOrigin { Builtin, Registered, Created };
+
+struct Field {
+  std::string Name;
+  FieldOrigin Origin = FieldOrigin::Builtin;
+  ForceKind Kind = ForceKind::Scalar;
+  unsigned Dim = 1;
+  bool ReadOnly = false; ///< id: no setter.
+  SourcePos Pos;         ///< Registration or first use.
+  // Filled by computeLiveness.
+  bool Live = false;
+  bool OutputOnly = false; ///< Written, never read: stored only for output.
+};
+
+/// A group of consecutive force kernels sharing one neighbour search.
+struct SearchGroup {
+  std::vector<unsigned> Kernels; ///< Indices into Model::Kernels.
+};
+
+struct Model {
+  std::string SourceFile;
+  Settings Sim;
+  std::vector<ForceRegistration> Forces;
+  std::vector<Kernel> Kernels;
+
+  // Derived.
+  std::vector<Field> Fields; ///< Builtins first, then forces; see resolveFields.
+  std::vector<SearchGroup> Searches;
+  std::vector<Finding> Findings; ///< Diagnostics from the model passes.
+
+  const Field *findField(const std::string &Name) const;
+  bool hasErrors() const;
+};
+
+/// The built-in particle properties in dump order.
+const std::vector<std::string> &builtinFieldNames();
+bool isBuiltinField(const std::string &Name);
+/// Builtins that output always contains, hence always live.
+bool isAlwaysOutput(const std::string &Name);
+
+} // namespace wash::tr

@@ -1,0 +1,20 @@
+//===- Liveness.cpp -------------------------------------------------------===//
+#include "wash/translator/Analysis/Liveness.h"
+
+namespace wash::tr {
+
+void computeLiveness(Model &M) {
+  for (Field &F : M.Fields) {
+    bool Read = false, Written = false;
+    for (const Kernel &K : M.Kernels) {
+      Read |= K.OwnReads.count(F.Name) || K.NeighbourReads.count(F.Name);
+      Written |= K.OwnWrites.count(F.Name) > 0;
+    }
+    F.Live = Read || Written || (F.Origin == FieldOrigin::Builtin && isAlwaysOutput(F.Name));
+    F.OutputOnly = Written && !Read;
+    if (!F.Live && F.Origin == FieldOrigin::Registered)
+      M.Findings.push_back({DiagId::ForceUnused, F.Pos, {F.Name}, {}});
+  }
+}
+
+} // namespace wash::tr

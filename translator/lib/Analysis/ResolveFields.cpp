@@ -1,0 +1,86 @@
+//===- ResolveFields.cpp --------------------------------------------------===//
+#include "wash/translator/Analysis/ResolveFields.h"
+
+#include <algorithm>
+
+namespace wash::tr {
+
+static Field builtin(const std::string &Name, unsigned Dim) {
+  Field F;
+  F.Name = Name;
+  F.Origin = FieldOrigin::Builtin;
+  bool Vector = Name == "pos" || Name == "vel" || Name == "acc";
+  F.Kind = Vector ? ForceKind::Vector : ForceKind::Scalar;
+  F.Dim = Vector ? Dim : 1;
+  F.ReadOnly = Name == "id";
+  return F;
+}
+
+static Finding mismatch(const Field &F, const Access &A) {
+  Finding R{DiagId::ForceKindMismatch,
+            A.Pos,
+            {F.Name, forceKindName(F.Kind), forceKindName(*A.Kind)},
+            {}};
+  if (F.Origin == FieldOrigin::Registered)
+    R.Notes.push_back({DiagId::NoteRegisteredHere, F.Pos, {F.Name}, {}});
+  else
+    R.Notes.push_back({DiagId::NoteFirstUsedHere, F.Pos, {F.Name, forceKindName(F.Kind)}, {}});
+  return R;
+}
+
+void resolveFields(Model &M) {
+  const unsigned Dim = M.Sim.Dimension;
+  M.Fields.clear();
+  for (const std::string &Name : builtinFieldNames())
+    M.Fields.push_back(builtin(Name, Dim));
+  for (const ForceRegistration &R : M.Forces) {
+    Field F;
+    F.Name = R.Name;
+    F.Origin = FieldOrigin::Registered;
+    F.Kind = R.Kind;
+    F.Dim = R.Kind == ForceKind::Vector ? Dim : 1;
+    F.Pos = R.Pos;
+    M.Fields.push_back(F);
+  }
+
+  // Kernels are stored in registration order; init kernels run first, so
+  // visit them first to find the use that creates a force at run time.
+  std::vector<const Kernel *> Order;
+  for (const Kernel &K : M.Kernels)
+    if (K.Kind == KernelKind::Init)
+      Order.push_back(&K);
+  for (const Kernel &K : M.Kernels)
+    if (K.Kind != KernelKind::Init)
+      Order.push_back(&K);
+
+  std::vector<SourcePos> Reported;
+  for (const Kernel *K : Order) {
+    for (const Access &A : K->Accesses) {
+      if (!A.Kind)
+        continue;
+      auto It = std::find_if(M.Fields.begin(), M.Fields.end(), [&](const Field &F) {
+        return F.Origin != FieldOrigin::Builtin && F.Name == A.Field;
+      });
+      if (It == M.Fields.end()) {
+        Field F;
+        F.Name = A.Field;
+        F.Origin = FieldOrigin::Created;
+        F.Kind = *A.Kind;
+        F.Dim = F.Kind == ForceKind::Vector ? Dim : 1;
+        F.Pos = A.Pos;
+        M.Fields.push_back(F);
+        M.Findings.push_back({DiagId::ForceCreated, A.Pos, {F.Name, forceKindName(F.Kind)}, {}});
+        continue;
+      }
+      // The same helper may be reached from several kernels: report a
+      // mismatching call once.
+      if (It->Kind != *A.Kind &&
+          std::find(Reported.begin(), Reported.end(), A.Pos) == Reported.end()) {
+        Reported.push_back(A.Pos);
+        M.Findings.push_back(mismatch(*It, A));
+      }
+    }
+  }
+}
+
+} // namespace wash::tr

@@ -1,0 +1,228 @@
+//===- CollectSimulation.cpp ----------------------------------------------===//
+#include "wash/translator/Frontend/CollectSimulation.h"
+#include "wash/translator/Frontend/ResolveKernel.h"
+#include "wash/translator/Frontend/WashApi.h"
+
+#include "clang/AST/ExprCXX.h"
+#include "clang/AST/RecursiveASTVisitor.h"
+#include "clang/AST/StmtCXX.h"
+
+#include <algorithm>
+#include <set>
+
+using namespace clang;
+
+namespace wash::tr {
+namespace {
+
+class Collector {
+public:
+  Collector(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs)
+      : Ctx(Ctx), D(D), M(M), Refs(Refs) {}
+
+  /// Each call is walked where it happens, as if inlined: a helper called
+  /// twice registers twice at run time too. Recursion and a budget against
+  /// hostile call trees bound the walk.
+  void walkFunction(const FunctionDecl *FD, bool InLoop) {
+    const FunctionDecl *Canon = FD->getCanonicalDecl();
+    if (!FD->hasBody() || Budget == 0 ||
+        std::find(Stack.begin(), Stack.end(), Canon) != Stack.end())
+      return;
+    --Budget;
+    Stack.push_back(Canon);
+    walk(FD->getBody(), InLoop);
+    Stack.pop_back();
+  }
+
+  /// Source locations of the registration calls the walk reached: compared by
+  /// location because templates have one call node per instantiation.
+  std::set<unsigned> Reached;
+
+private:
+  void walk(const Stmt *S, bool InLoop) {
+    if (!S)
+      return;
+    if (isa<ForStmt, WhileStmt, DoStmt, CXXForRangeStmt>(S))
+      InLoop = true;
+    if (const auto *CE = dyn_cast<CallExpr>(S))
+      call(CE, InLoop);
+    if (const auto *L = dyn_cast<LambdaExpr>(S)) {
+      // The body runs when the lambda is called, and is walked then.
+      for (const Expr *Init : L->capture_inits())
+        walk(Init, InLoop);
+      return;
+    }
+    for (const Stmt *Child : S->children())
+      walk(Child, InLoop);
+  }
+
+  void call(const CallExpr *CE, bool InLoop) {
+    const FunctionDecl *FD = CE->getDirectCallee();
+    if (!FD)
+      return;
+    if (isRegistrationFunction(FD)) {
+      Reached.insert(CE->getBeginLoc().getRawEncoding());
+      registration(CE, FD->getName(), InLoop);
+      return;
+    }
+    const FunctionDecl *Def = FD->getDefinition();
+    if (Def && isUserCode(Ctx.getSourceManager(), Def))
+      walkFunction(Def, InLoop);
+  }
+
+  SettingValue value(const Expr *E, std::optional<std::string> Constant) {
+    SettingValue V;
+    V.Constant = Constant.has_value();
+    V.Text = Constant ? *Constant : sourceText(E, Ctx);
+    V.Pos = D.toPos(E->getBeginLoc());
+    return V;
+  }
+
+  static std::optional<std::string> quoted(std::optional<std::string> S) {
+    if (!S)
+      return std::nullopt;
+    return "\"" + *S + "\"";
+  }
+
+  void registration(const CallExpr *CE, StringRef Name, bool InLoop) {
+    bool Adds = Name.starts_with("add_");
+    if (Adds && InLoop) {
+      D.report(DiagId::RegistrationInLoop, CE->getBeginLoc(), {Name.str()});
+      return;
+    }
+    const Expr *Arg = CE->getNumArgs() ? CE->getArg(0) : nullptr;
+    if (Name == "start") {
+      M.Sim.CallsStart = true;
+    } else if (Name == "set_precision") {
+      auto S = evaluateString(Arg, Ctx);
+      if (!S || (*S != "double" && *S != "float"))
+        D.report(DiagId::PrecisionInvalid, Arg->getExprLoc());
+      else
+        M.Sim.Precision = *S;
+    } else if (Name == "set_influence_radius") {
+      M.Sim.InfluenceRadius = value(Arg, evaluateNumber(Arg, Ctx));
+    } else if (Name == "set_max_iterations") {
+      auto N = evaluateInt(Arg, Ctx);
+      M.Sim.MaxIterations = value(Arg, N ? std::optional(std::to_string(*N)) : std::nullopt);
+    } else if (Name == "set_simulation_name") {
+      M.Sim.SimulationNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
+    } else if (Name == "set_output_file_name") {
+      M.Sim.OutputFileNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
+    } else if (Name == "add_force") {
+      addForce(CE);
+    } else {
+      KernelKind Kind = Name == "add_init_kernel"     ? KernelKind::Init
+                        : Name == "add_update_kernel" ? KernelKind::Update
+                                                      : KernelKind::Force;
+      if (const FunctionDecl *Def = resolveKernel(CE, Kind, Ctx, D)) {
+        Kernel K;
+        K.Kind = Kind;
+        K.Function = Def->getQualifiedNameAsString();
+        K.Pos = D.toPos(CE->getBeginLoc());
+        M.Kernels.push_back(K);
+        Refs.Kernels.push_back(Def);
+      }
+    }
+  }
+
+  void addForce(const CallExpr *CE) {
+    const Expr *NameArg = CE->getArg(0), *DimArg = CE->getArg(1);
+    auto Name = evaluateString(NameArg, Ctx);
+    if (!Name) {
+      D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
+      return;
+    }
+    unsigned SimDim = M.Sim.Dimension;
+    auto Dim = evaluateInt(DimArg, Ctx);
+    if (!Dim) {
+      D.report(DiagId::ForceDimNotConstant, DimArg->getExprLoc(), {*Name});
+      return;
+    }
+    if (*Dim != 1 && *Dim != SimDim) {
+      D.report(DiagId::ForceDimInvalid, DimArg->getExprLoc(),
+               {*Name, std::to_string(*Dim), std::to_string(SimDim)});
+      return;
+    }
+    for (const ForceRegistration &R : M.Forces)
+      if (R.Name == *Name) {
+        D.report(DiagId::ForceRegisteredTwice, NameArg->getExprLoc(), {*Name});
+        D.report(DiagId::NoteRegisteredHere, D.fromPos(R.Pos), {*Name});
+        return;
+      }
+    M.Forces.push_back(
+        {*Name, *Dim == 1 ? ForceKind::Scalar : ForceKind::Vector, D.toPos(NameArg->getExprLoc())});
+  }
+
+  ASTContext &Ctx;
+  Diagnoser &D;
+  Model &M;
+  AstRefs &Refs;
+  std::vector<const FunctionDecl *> Stack;
+  unsigned Budget = 10000;
+};
+
+/// Registration calls and references in user code that the walk from main
+/// did not account for.
+class Stragglers : public RecursiveASTVisitor<Stragglers> {
+public:
+  Stragglers(const SourceManager &SM, Diagnoser &D, const std::set<unsigned> &Reached)
+      : SM(SM), D(D), Reached(Reached) {}
+
+  bool TraverseDecl(Decl *Dcl) {
+    // The API's own headers declare these functions; only user code matters.
+    if (Dcl && !isa<TranslationUnitDecl>(Dcl) && !isUserCode(SM, Dcl))
+      return true;
+    return RecursiveASTVisitor::TraverseDecl(Dcl);
+  }
+
+  bool VisitCallExpr(CallExpr *CE) {
+    const FunctionDecl *FD = CE->getDirectCallee();
+    if (!isRegistrationFunction(FD))
+      return true;
+    Callees.insert(CE->getCallee()->IgnoreParenImpCasts());
+    if (!Reached.count(CE->getBeginLoc().getRawEncoding()))
+      D.report(DiagId::RegistrationUnreachable, CE->getBeginLoc(), {FD->getName().str()});
+    return true;
+  }
+
+  bool VisitDeclRefExpr(DeclRefExpr *DRE) {
+    const auto *FD = dyn_cast<FunctionDecl>(DRE->getDecl());
+    if (isRegistrationFunction(FD) && !Callees.count(DRE))
+      D.report(DiagId::RegistrationIndirect, DRE->getLocation(), {FD->getName().str()});
+    return true;
+  }
+
+private:
+  const SourceManager &SM;
+  Diagnoser &D;
+  const std::set<unsigned> &Reached;
+  std::set<const Expr *> Callees;
+};
+
+} // namespace
+
+static const FunctionDecl *findMain(ASTContext &Ctx) {
+  for (const Decl *Dcl : Ctx.getTranslationUnitDecl()->decls())
+    if (const auto *FD = dyn_cast<FunctionDecl>(Dcl))
+      if (FD->isMain() && FD->isThisDeclarationADefinition())
+        return FD;
+  return nullptr;
+}
+
+bool collectSimulation(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs) {
+  Refs.Main = findMain(Ctx);
+  if (!Refs.Main) {
+    SourceManager &SM = Ctx.getSourceManager();
+    D.report(DiagId::NoMain, SM.getLocForStartOfFile(SM.getMainFileID()));
+    return false;
+  }
+  Collector C(Ctx, D, M, Refs);
+  C.walkFunction(Refs.Main, /*InLoop=*/false);
+  Stragglers S(Ctx.getSourceManager(), D, C.Reached);
+  S.TraverseAST(Ctx);
+  if (!M.Sim.CallsStart)
+    D.report(DiagId::MissingStart, Refs.Main->getLocation());
+  return !D.hasErrors();
+}
+
+} // namespace wash::tr

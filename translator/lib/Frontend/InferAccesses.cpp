@@ -1,0 +1,370 @@
+//===- InferAccesses.cpp --------------------------------------------------===//
+#include "wash/translator/Frontend/InferAccesses.h"
+#include "wash/translator/Frontend/ParticleRoles.h"
+#include "wash/translator/Frontend/WashApi.h"
+
+#include "clang/AST/Attr.h"
+#include "clang/AST/DeclCXX.h"
+#include "clang/AST/DeclTemplate.h"
+#include "clang/AST/ExprCXX.h"
+
+#include <map>
+#include <set>
+#include <tuple>
+
+using namespace clang;
+
+namespace wash::tr {
+namespace {
+
+struct Property {
+  std::string Field; ///< Empty for forces: the name is the first argument.
+  Mode How;
+  std::optional<ForceKind> Kind;
+};
+
+/// The property a wash::Particle member function reads or writes.
+std::optional<Property> classify(StringRef Method) {
+  if (Method == "get_id")
+    return Property{"id", Mode::Read, std::nullopt};
+  if (Method == "get_force_scalar" || Method == "set_force_scalar")
+    return Property{"", Method[0] == 'g' ? Mode::Read : Mode::Write, ForceKind::Scalar};
+  if (Method == "get_force_vector" || Method == "set_force_vector")
+    return Property{"", Method[0] == 'g' ? Mode::Read : Mode::Write, ForceKind::Vector};
+  for (StringRef F : {"pos", "vel", "acc", "density", "mass", "smoothing_length"}) {
+    if (Method == ("get_" + F).str())
+      return Property{F.str(), Mode::Read, std::nullopt};
+    if (Method == ("set_" + F).str())
+      return Property{F.str(), Mode::Write, std::nullopt};
+  }
+  return std::nullopt;
+}
+
+/// One function body being analysed, with the roles of its variables.
+struct Frame {
+  llvm::DenseMap<const ValueDecl *, Roles> Vars;
+  std::map<const CallExpr *, Roles> Calls;
+  Roles Return = 0;
+};
+
+class KernelAnalyser {
+public:
+  KernelAnalyser(ASTContext &Ctx, Diagnoser &D, Kernel &K, SourceLocation KernelLoc)
+      : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc) {}
+
+  void run(const FunctionDecl *Def) {
+    std::vector<Roles> Params;
+    if (K.Kind != KernelKind::Init)
+      Params.push_back(RoleOwn);
+    if (K.Kind == KernelKind::Force)
+      Params.push_back(RoleList);
+    analyse(Def, Params);
+  }
+
+private:
+  RoleEvaluator roles() {
+    return RoleEvaluator(
+        [this](const ValueDecl *VD) -> Roles {
+          // Innermost first: lambda bodies see their enclosing function's variables.
+          for (auto It = Frames.rbegin(); It != Frames.rend(); ++It)
+            if (auto F = (*It)->Vars.find(VD); F != (*It)->Vars.end())
+              return F->second;
+          return 0;
+        },
+        [this](const CallExpr *CE) -> std::optional<Roles> {
+          auto It = Frames.back()->Calls.find(CE);
+          return It == Frames.back()->Calls.end() ? std::nullopt : std::optional(It->second);
+        });
+  }
+  Roles roleOf(const Expr *E) { return roles().of(E); }
+
+  Roles analyse(const FunctionDecl *FD, const std::vector<Roles> &Params) {
+    auto Key = std::make_pair(FD->getCanonicalDecl(), Params);
+    if (auto It = Memo.find(Key); It != Memo.end())
+      return It->second;
+    if (Budget == 0) {
+      D.report(DiagId::AnalysisTooComplex, KernelLoc, {K.Function});
+      return 0;
+    }
+    --Budget;
+    Frame F;
+    for (unsigned I = 0; I < FD->getNumParams() && I < Params.size(); ++I)
+      F.Vars[FD->getParamDecl(I)] = Params[I];
+    Frames.push_back(&F);
+    Stack.push_back(FD->getCanonicalDecl());
+    // Flow-insensitive: first let variable roles reach a fixed point, so a
+    // variable assigned a neighbour late counts as a neighbour everywhere.
+    for (unsigned Round = 0; Round < 8 && bind(FD->getBody()); ++Round)
+      ;
+    record(FD->getBody());
+    Stack.pop_back();
+    Frames.pop_back();
+    // Lambdas see their enclosing frame, so their results depend on more
+    // than their parameters: only functions are memoised.
+    if (!isLambda(FD))
+      Memo[Key] = F.Return;
+    return F.Return;
+  }
+
+  static bool isLambda(const FunctionDecl *FD) {
+    const auto *MD = dyn_cast<CXXMethodDecl>(FD);
+    return MD && MD->getParent()->isLambda();
+  }
+
+  /// Adds Roles to variable VD; true if that changed anything.
+  bool join(const ValueDecl *VD, Roles R) {
+    Roles &Slot = Frames.back()->Vars[VD];
+    Roles Old = Slot;
+    Slot |= R;
+    return Slot != Old;
+  }
+
+  /// The variable an assignment or initialisation stores into, if any.
+  static const ValueDecl *assignedVar(const Expr *LHS) {
+    const auto *DRE = dyn_cast<DeclRefExpr>(LHS->IgnoreParenImpCasts());
+    return DRE ? DRE->getDecl() : nullptr;
+  }
+
+  bool bind(const Stmt *S) {
+    if (!S)
+      return false;
+    bool Changed = false;
+    if (const auto *L = dyn_cast<LambdaExpr>(S)) {
+      for (const Expr *Init : L->capture_inits())
+        Changed |= bind(Init);
+      return Changed;
+    }
+    for (const Stmt *Child : S->children())
+      Changed |= bind(Child);
+    if (const auto *DS = dyn_cast<DeclStmt>(S))
+      for (const Decl *Dcl : DS->decls())
+        if (const auto *VD = dyn_cast<VarDecl>(Dcl); VD && VD->getInit())
+          Changed |= join(VD, roleOf(VD->getInit()));
+    if (auto [Var, Value] = assignment(S); Var)
+      Changed |= join(Var, roleOf(Value));
+    return Changed;
+  }
+
+  /// `v = e` with v a variable, built-in or overloaded.
+  static std::pair<const ValueDecl *, const Expr *> assignment(const Stmt *S) {
+    if (const auto *B = dyn_cast<BinaryOperator>(S); B && B->getOpcode() == BO_Assign)
+      return {assignedVar(B->getLHS()), B->getRHS()};
+    if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(S);
+        OC && OC->getOperator() == OO_Equal && OC->getNumArgs() == 2)
+      return {assignedVar(OC->getArg(0)), OC->getArg(1)};
+    return {nullptr, nullptr};
+  }
+
+  /// Children first, so that calls nested in an expression are analysed
+  /// (and their result roles known) before the expression that uses them.
+  void record(const Stmt *S) {
+    if (!S)
+      return;
+    if (const auto *L = dyn_cast<LambdaExpr>(S)) {
+      for (const Expr *Init : L->capture_inits())
+        record(Init); // The body is analysed where the lambda is called.
+      return;
+    }
+    for (const Stmt *Child : S->children())
+      record(Child);
+    if (const auto *DS = dyn_cast<DeclStmt>(S))
+      for (const Decl *Dcl : DS->decls())
+        if (const auto *VD = dyn_cast<VarDecl>(Dcl); VD && VD->getInit())
+          join(VD, roleOf(VD->getInit()));
+    if (auto [Var, Value] = assignment(S); Var)
+      join(Var, roleOf(Value));
+    if (const auto *RS = dyn_cast<ReturnStmt>(S); RS && RS->getRetValue())
+      Frames.back()->Return |= roleOf(RS->getRetValue());
+    if (const auto *CE = dyn_cast<CallExpr>(S))
+      call(CE);
+  }
+
+  void call(const CallExpr *CE);
+  void particleMethod(const CallExpr *CE, const FunctionDecl *FD);
+  void libraryCall(const CallExpr *CE);
+  void userCall(const CallExpr *CE, const FunctionDecl *FD);
+  void add(Access A) {
+    if (Recorded.insert(std::make_tuple(A.Field, A.On, A.How, A.Pos.Line, A.Pos.Col)).second)
+      K.Accesses.push_back(std::move(A));
+  }
+  bool anyParticleArg(const CallExpr *CE) {
+    for (const Expr *A : CE->arguments())
+      if (roleOf(A) || involvesParticle(A->getType()))
+        return true;
+    return false;
+  }
+
+  ASTContext &Ctx;
+  Diagnoser &D;
+  Kernel &K;
+  SourceLocation KernelLoc;
+  std::vector<Frame *> Frames;
+  std::vector<const FunctionDecl *> Stack;
+  std::map<std::pair<const FunctionDecl *, std::vector<Roles>>, Roles> Memo;
+  std::set<std::tuple<std::string, Target, Mode, unsigned, unsigned>> Recorded;
+  unsigned Budget = 20000;
+};
+
+void KernelAnalyser::call(const CallExpr *CE) {
+  const FunctionDecl *FD = CE->getDirectCallee();
+  if (!FD) {
+    if (anyParticleArg(CE))
+      D.report(DiagId::IndirectCall, CE->getBeginLoc(), {K.Function});
+    return;
+  }
+  if (isParticleMethod(FD))
+    return particleMethod(CE, FD);
+  if (isWashFunction(FD, "create_particle")) {
+    if (K.Kind != KernelKind::Init) {
+      D.report(DiagId::CreateOutsideInit, CE->getBeginLoc(), {kernelKindName(K.Kind), K.Function});
+      return;
+    }
+    for (const char *F : {"pos", "vel", "density", "mass", "smoothing_length"})
+      add({F, Target::Own, Mode::Write, std::nullopt, D.toPos(CE->getBeginLoc())});
+    return;
+  }
+  if (isWashFunction(FD))
+    return;
+  const auto *MD = dyn_cast<CXXMethodDecl>(FD);
+  if (MD && MD->isVirtual() && !MD->hasAttr<FinalAttr>() &&
+      !MD->getParent()->hasAttr<FinalAttr>() && anyParticleArg(CE)) {
+    D.report(DiagId::IndirectCall, CE->getBeginLoc(), {K.Function});
+    return;
+  }
+  const FunctionDecl *Def = FD->getDefinition();
+  if (isUserCode(Ctx.getSourceManager(), Def ? Def : FD))
+    return userCall(CE, FD);
+  libraryCall(CE);
+}
+
+void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) {
+  const Expr *Object = nullptr;
+  unsigned FirstArg = 0;
+  if (const auto *MC = dyn_cast<CXXMemberCallExpr>(CE)) {
+    Object = MC->getImplicitObjectArgument();
+  } else if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(CE); OC && OC->getNumArgs() > 0) {
+    Object = OC->getArg(0);
+    FirstArg = 1;
+  }
+  if (!Object)
+    return;
+  Roles R = roleOf(Object);
+  std::string Method = FD->getNameAsString();
+  if (FD->getOverloadedOperator() == OO_Equal) {
+    // Assigning a handle rebinds a variable (handled by bind/record) unless
+    // it overwrites a neighbour's handle in place.
+    if (R & RoleNeighbour && !assignedVar(Object))
+      D.report(DiagId::NeighbourWrite, CE->getExprLoc(), {"operator="});
+    return;
+  }
+  auto P = classify(Method);
+  if (!P)
+    return;
+  if (P->Kind) {
+    if (CE->getNumArgs() <= FirstArg)
+      return;
+    const Expr *NameArg = CE->getArg(FirstArg);
+    auto Name = evaluateString(NameArg, Ctx);
+    if (!Name) {
+      D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
+      return;
+    }
+    P->Field = *Name;
+  }
+  SourceLocation Loc = CE->getExprLoc();
+  if (!(R & (RoleOwn | RoleNeighbour))) {
+    D.report(DiagId::UnknownParticle, Loc, {Method});
+    return;
+  }
+  if (R & RoleOwn)
+    add({P->Field, Target::Own, P->How, P->Kind, D.toPos(Loc)});
+  if (R & RoleNeighbour) {
+    if (P->How == Mode::Write)
+      D.report(DiagId::NeighbourWrite, Loc, {Method});
+    else
+      add({P->Field, Target::Neighbour, P->How, P->Kind, D.toPos(Loc)});
+  }
+}
+
+/// The lambda an argument evaluates to, looking through copies and variables.
+static const LambdaExpr *lambdaOf(const Expr *E) {
+  for (unsigned Depth = 0; E && Depth < 16; ++Depth) {
+    E = E->IgnoreParenImpCasts();
+    if (const auto *L = dyn_cast<LambdaExpr>(E))
+      return L;
+    if (const auto *M = dyn_cast<MaterializeTemporaryExpr>(E))
+      E = M->getSubExpr();
+    else if (const auto *B = dyn_cast<CXXBindTemporaryExpr>(E))
+      E = B->getSubExpr();
+    else if (const auto *C = dyn_cast<CXXConstructExpr>(E); C && C->getNumArgs() == 1)
+      E = C->getArg(0);
+    else if (const auto *DRE = dyn_cast<DeclRefExpr>(E)) {
+      const auto *VD = dyn_cast<VarDecl>(DRE->getDecl());
+      E = VD ? VD->getInit() : nullptr;
+    } else
+      return nullptr;
+  }
+  return nullptr;
+}
+
+/// Standard library calls are not followed, except into lambdas they are
+/// given: std::for_each(ns.begin(), ns.end(), [&](const Particle &n) {...})
+/// calls the lambda with what the other arguments hold.
+void KernelAnalyser::libraryCall(const CallExpr *CE) {
+  Roles Given = 0;
+  for (const Expr *A : CE->arguments())
+    Given |= derefRoles(roleOf(A)) | (roleOf(A) & (RoleOwn | RoleNeighbour));
+  for (const Expr *A : CE->arguments()) {
+    const LambdaExpr *L = lambdaOf(A);
+    if (!L)
+      continue;
+    std::vector<const FunctionDecl *> Operators;
+    if (const FunctionTemplateDecl *T = L->getDependentCallOperator())
+      for (const FunctionDecl *Spec : T->specializations())
+        Operators.push_back(Spec);
+    else
+      Operators.push_back(L->getCallOperator());
+    for (const FunctionDecl *Op : Operators) {
+      if (!Op->hasBody())
+        continue;
+      std::vector<Roles> Params;
+      for (const ParmVarDecl *P : Op->parameters())
+        Params.push_back(involvesParticle(P->getType()) ? Given : 0);
+      analyse(Op, Params);
+    }
+  }
+}
+
+void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
+  const FunctionDecl *Def = FD->getDefinition();
+  if (!Def || !Def->hasBody()) {
+    if (anyParticleArg(CE)) {
+      D.report(DiagId::HelperNotDefined, CE->getBeginLoc(), {FD->getQualifiedNameAsString()});
+      D.report(DiagId::NoteDeclaredHere, FD->getLocation(), {FD->getQualifiedNameAsString()});
+    }
+    return;
+  }
+  if (std::find(Stack.begin(), Stack.end(), Def->getCanonicalDecl()) != Stack.end()) {
+    D.report(DiagId::Recursion, CE->getBeginLoc(), {Def->getQualifiedNameAsString(), K.Function});
+    D.report(DiagId::NoteKernelRegisteredHere, KernelLoc, {K.Function});
+    return;
+  }
+  // A member operator call (a lambda's operator()) passes the object first.
+  unsigned Skip = isa<CXXOperatorCallExpr>(CE) && isa<CXXMethodDecl>(FD) ? 1 : 0;
+  std::vector<Roles> Params;
+  for (unsigned I = Skip; I < CE->getNumArgs(); ++I)
+    Params.push_back(roleOf(CE->getArg(I)));
+  Frames.back()->Calls[CE] = analyse(Def, Params);
+}
+
+} // namespace
+
+bool inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs, Model &M) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    KernelAnalyser A(Ctx, D, M.Kernels[I], D.fromPos(M.Kernels[I].Pos));
+    A.run(Refs.Kernels[I]);
+  }
+  return !D.hasErrors();
+}
+
+} // namespace wash::tr

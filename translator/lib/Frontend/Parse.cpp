@@ -1,0 +1,125 @@
+//===- Parse.cpp ----------------------------------------------------------===//
+#include "wash/translator/Frontend/Parse.h"
+#include "wash/translator/Frontend/DetectDimension.h"
+
+#include "clang/AST/ASTConsumer.h"
+#include "clang/Frontend/CompilerInstance.h"
+#include "clang/Frontend/FrontendAction.h"
+#include "clang/Tooling/ArgumentsAdjusters.h"
+#include "clang/Tooling/CompilationDatabase.h"
+#include "clang/Tooling/Tooling.h"
+#include "llvm/Support/FileSystem.h"
+#include "llvm/Support/MemoryBuffer.h"
+#include "llvm/Support/Path.h"
+#include "llvm/Support/raw_ostream.h"
+#include "llvm/Support/thread.h"
+
+using namespace clang;
+
+namespace wash::tr {
+namespace {
+
+using Callback = std::function<void(ASTContext &, Diagnoser &, unsigned)>;
+
+class Consumer : public ASTConsumer {
+public:
+  Consumer(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
+  void HandleTranslationUnit(ASTContext &Ctx) override {
+    // A source clang rejects has only clang's errors: analysing a broken AST
+    // would add noise.
+    if (Ctx.getDiagnostics().hasErrorOccurred())
+      return;
+    Diagnoser D(Ctx.getDiagnostics(), Ctx.getSourceManager());
+    OnAST(Ctx, D, Dim);
+  }
+
+private:
+  const Callback &OnAST;
+  unsigned Dim;
+};
+
+class Action : public ASTFrontendAction {
+public:
+  Action(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
+  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance &, StringRef) override {
+    return std::make_unique<Consumer>(OnAST, Dim);
+  }
+
+private:
+  const Callback &OnAST;
+  unsigned Dim;
+};
+
+class Factory : public tooling::FrontendActionFactory {
+public:
+  Factory(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
+  std::unique_ptr<FrontendAction> create() override { return std::make_unique<Action>(OnAST, Dim); }
+
+private:
+  const Callback &OnAST;
+  unsigned Dim;
+};
+
+/// The wash API headers: <prefix>/include next to an installed wash, else the
+/// source tree this wash was built from.
+std::string apiIncludeDir(const std::string &Exe) {
+  if (!Exe.empty()) {
+    llvm::SmallString<256> Dir(llvm::sys::path::parent_path(llvm::sys::path::parent_path(Exe)));
+    llvm::sys::path::append(Dir, "include");
+    llvm::SmallString<256> Header(Dir);
+    llvm::sys::path::append(Header, "wash", "wash.hpp");
+    if (llvm::sys::fs::exists(Header))
+      return std::string(Dir);
+  }
+  return WASH_API_INCLUDE_DIR;
+}
+
+/// The WASH_DIM the user defines after `--` (0 if none; 2 for a bare -DWASH_DIM).
+unsigned definedDim(const std::vector<std::string> &Args) {
+  unsigned Dim = 0;
+  for (size_t I = 0; I < Args.size(); ++I) {
+    StringRef A = Args[I];
+    if (A == "-D" && I + 1 < Args.size())
+      A = Args[++I];
+    else if (!A.consume_front("-D"))
+      continue;
+    if (A.consume_front("WASH_DIM"))
+      Dim = A.consume_front("=") && A == "3" ? 3 : 2;
+  }
+  return Dim;
+}
+
+} // namespace
+
+bool parseSimulation(const Options &Opts, const Callback &OnAST) {
+  auto Buffer = llvm::MemoryBuffer::getFile(Opts.Source);
+  if (!Buffer) {
+    llvm::errs() << "wash: error: cannot read '" << Opts.Source
+                 << "': " << Buffer.getError().message() << "\n";
+    return false;
+  }
+  unsigned UserDim = definedDim(Opts.CompilerArgs);
+  unsigned Dim = UserDim ? UserDim : guessDimension((*Buffer)->getBuffer());
+
+  std::vector<std::string> Flags = {"-std=c++20"};
+  Flags.insert(Flags.end(), Opts.CompilerArgs.begin(), Opts.CompilerArgs.end());
+  tooling::FixedCompilationDatabase DB(".", Flags);
+  tooling::ClangTool Tool(DB, {Opts.Source});
+  // -x c++: a simulation is C++ whatever its file is called.
+  std::vector<std::string> Baked = {"-x", "c++", "-resource-dir=" WASH_CLANG_RESOURCE_DIR,
+                                    "-isystem", apiIncludeDir(Opts.ExecutablePath)};
+  if (!UserDim)
+    Baked.push_back("-DWASH_DIM=" + std::to_string(Dim));
+  Tool.appendArgumentsAdjuster(
+      tooling::getInsertArgumentAdjuster(Baked, tooling::ArgumentInsertPosition::BEGIN));
+
+  Factory F(OnAST, Dim);
+  int Status = 1;
+  // Deeply nested hostile input must not overflow the stack: run clang and
+  // the passes, which recurse over the AST, on a thread with a large one.
+  llvm::thread Worker(std::optional<unsigned>(512u << 20), [&] { Status = Tool.run(&F); });
+  Worker.join();
+  return Status == 0;
+}
+
+} // namespace wash::tr

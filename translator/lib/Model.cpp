@@ -1,0 +1,71 @@
+//===- Model.cpp - model helpers and the diagnostic tables ----------------===//
+#include "wash/translator/Model.h"
+
+#include <algorithm>
+
+namespace wash::tr {
+
+DiagLevel diagLevel(DiagId Id) {
+  switch (Id) {
+#define WASH_DIAG(Name, Level, Message)                                                            \
+  case DiagId::Name:                                                                               \
+    return DiagLevel::Level;
+#include "wash/translator/DiagnosticKinds.def"
+  }
+  return DiagLevel::Error;
+}
+
+const char *diagMessage(DiagId Id) {
+  switch (Id) {
+#define WASH_DIAG(Name, Level, Message)                                                            \
+  case DiagId::Name:                                                                               \
+    return Message;
+#include "wash/translator/DiagnosticKinds.def"
+  }
+  return "";
+}
+
+const char *forceKindName(ForceKind K) { return K == ForceKind::Scalar ? "scalar" : "vector"; }
+
+const char *kernelKindName(KernelKind K) {
+  switch (K) {
+  case KernelKind::Init:
+    return "init";
+  case KernelKind::Update:
+    return "update";
+  case KernelKind::Force:
+    return "force";
+  }
+  return "?";
+}
+
+const std::vector<std::string> &builtinFieldNames() {
+  static const std::vector<std::string> Names = {
+      "id", "pos", "vel", "acc", "density", "mass", "smoothing_length"};
+  return Names;
+}
+
+bool isBuiltinField(const std::string &Name) {
+  const auto &B = builtinFieldNames();
+  return std::find(B.begin(), B.end(), Name) != B.end();
+}
+
+bool isAlwaysOutput(const std::string &Name) {
+  // The columns every output format has (docs/semantics.md); acc is not one.
+  return Name == "id" || Name == "pos" || Name == "vel" || Name == "density" || Name == "mass" ||
+         Name == "smoothing_length";
+}
+
+const Field *Model::findField(const std::string &Name) const {
+  for (const Field &F : Fields)
+    if (F.Name == Name)
+      return &F;
+  return nullptr;
+}
+
+bool Model::hasErrors() const {
+  return std::any_of(Findings.begin(), Findings.end(),
+                     [](const Finding &F) { return diagLevel(F.Id) == DiagLevel::Error; });
+}
+
+} // namespace wash::tr

@@ -1,0 +1,104 @@
+//===- ModelDump.cpp ------------------------------------------------------===//
+#include "wash/translator/ModelDump.h"
+
+namespace wash::tr {
+
+static std::string pos(const SourcePos &P) {
+  return P.valid() ? std::to_string(P.Line) + ":" + std::to_string(P.Col) : "-";
+}
+
+/// A set in field order, so the dump does not depend on name sorting.
+static void printSet(const Model &M, std::ostream &OS, const char *Label, const FieldSet &S) {
+  OS << "    " << Label << ":";
+  if (S.empty())
+    OS << " -";
+  for (const Field &F : M.Fields)
+    if (S.count(F.Name))
+      OS << ' ' << F.Name;
+  // Names without a field only appear when an earlier pass failed.
+  for (const std::string &N : S)
+    if (!M.findField(N))
+      OS << ' ' << N;
+  OS << '\n';
+}
+
+static void printSetting(std::ostream &OS, const char *Label,
+                         const std::optional<SettingValue> &V) {
+  OS << "  " << Label << ": ";
+  if (!V)
+    OS << "unset\n";
+  else
+    OS << (V->Constant ? "" : "runtime ") << V->Text << " @" << pos(V->Pos) << '\n';
+}
+
+static void printNames(std::ostream &OS, const char *Label, const std::vector<SettingValue> &Vs) {
+  OS << "  " << Label << ":";
+  if (Vs.empty())
+    OS << " unset";
+  for (const SettingValue &V : Vs)
+    OS << ' ' << (V.Constant ? "" : "runtime ") << V.Text << " @" << pos(V.Pos);
+  OS << '\n';
+}
+
+static const char *originName(FieldOrigin O) {
+  switch (O) {
+  case FieldOrigin::Builtin:
+    return "builtin";
+  case FieldOrigin::Registered:
+    return "registered";
+  case FieldOrigin::Created:
+    return "created";
+  }
+  return "?";
+}
+
+void dumpModel(const Model &M, std::ostream &OS) {
+  OS << "simulation\n";
+  OS << "  precision: " << M.Sim.Precision << '\n';
+  OS << "  dimension: " << M.Sim.Dimension << '\n';
+  printSetting(OS, "influence-radius", M.Sim.InfluenceRadius);
+  printSetting(OS, "max-iterations", M.Sim.MaxIterations);
+  printNames(OS, "simulation-name", M.Sim.SimulationNames);
+  printNames(OS, "output-file-name", M.Sim.OutputFileNames);
+  OS << "  starts: " << (M.Sim.CallsStart ? "yes" : "no") << '\n';
+
+  OS << "fields\n";
+  for (const Field &F : M.Fields) {
+    OS << "  " << F.Name << ": " << originName(F.Origin) << ' ' << forceKindName(F.Kind);
+    if (F.Kind == ForceKind::Vector)
+      OS << F.Dim;
+    OS << (F.Live ? " live" : " dead");
+    if (F.OutputOnly)
+      OS << " output-only";
+    if (F.ReadOnly)
+      OS << " read-only";
+    if (F.Origin != FieldOrigin::Builtin)
+      OS << " @" << pos(F.Pos);
+    OS << '\n';
+  }
+
+  OS << "kernels\n";
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    const Kernel &K = M.Kernels[I];
+    OS << "  " << I << ": " << kernelKindName(K.Kind) << ' ' << K.Function << " @" << pos(K.Pos)
+       << '\n';
+    printSet(M, OS, "own-reads", K.OwnReads);
+    printSet(M, OS, "own-writes", K.OwnWrites);
+    if (K.Kind != KernelKind::Force)
+      continue;
+    printSet(M, OS, "neighbour-reads", K.NeighbourReads);
+    printSet(M, OS, "hazards", K.Hazards);
+    OS << "    search: " << K.SearchGroup << '\n';
+    printSet(M, OS, "halo", K.HaloFields);
+  }
+
+  OS << "neighbour-searches\n";
+  for (unsigned G = 0; G < M.Searches.size(); ++G) {
+    OS << "  " << G << ":";
+    for (unsigned I : M.Searches[G].Kernels)
+      OS << ' ' << M.Kernels[I].Function;
+    OS << '\n';
+  }
+}
+
+} // namespace wash::tr

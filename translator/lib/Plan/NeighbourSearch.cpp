@@ -1,0 +1,26 @@
+//===- NeighbourSearch.cpp ------------------------------------------------===//
+#include "wash/translator/Plan/NeighbourSearch.h"
+
+namespace wash::tr {
+
+void planNeighbourSearch(Model &M) {
+  M.Searches.clear();
+  bool PosWritten = true; // Nothing to reuse at the start of an iteration.
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    Kernel &K = M.Kernels[I];
+    K.SearchGroup = -1;
+    if (K.Kind == KernelKind::Init)
+      continue; // Init kernels run once, before the iteration loop.
+    if (K.Kind == KernelKind::Force) {
+      if (PosWritten)
+        M.Searches.push_back({});
+      K.SearchGroup = static_cast<int>(M.Searches.size()) - 1;
+      M.Searches.back().Kernels.push_back(I);
+      PosWritten = false;
+    }
+    if (K.OwnWrites.count("pos"))
+      PosWritten = true;
+  }
+}
+
+} // namespace wash::tr

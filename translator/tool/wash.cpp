@@ -1,0 +1,62 @@
+//===- wash.cpp - the wash command ----------------------------------------===//
+//
+// wash [options] <simulation.cpp> [-- <compiler flags>]
+//
+//===----------------------------------------------------------------------===//
+#include "wash/translator/Pipeline.h"
+
+#include "llvm/ADT/ArrayRef.h"
+#include "llvm/Config/llvm-config.h"
+#include "llvm/Support/CommandLine.h"
+#include "llvm/Support/FileSystem.h"
+#include "llvm/Support/InitLLVM.h"
+#include "llvm/Support/raw_ostream.h"
+
+#include <cstring>
+
+using namespace llvm;
+using wash::tr::Backend;
+
+static cl::OptionCategory WashCategory("wash options");
+static cl::opt<std::string> Source(cl::Positional, cl::desc("<simulation.cpp>"), cl::Required,
+                                   cl::cat(WashCategory));
+static cl::opt<Backend>
+    TargetBackend("backend", cl::desc("Backend to generate code for"), cl::init(Backend::Serial),
+                  cl::values(clEnumValN(Backend::Serial, "serial", "one process, one thread"),
+                             clEnumValN(Backend::OpenMP, "openmp", "one process, OpenMP threads"),
+                             clEnumValN(Backend::MPI, "mpi", "MPI ranks with halo exchange")),
+                  cl::cat(WashCategory));
+static cl::opt<std::string> OutputDir("o", cl::desc("Directory for generated code"),
+                                      cl::value_desc("dir"), cl::init("."), cl::cat(WashCategory));
+static cl::opt<bool> DumpModel("dump-model",
+                               cl::desc("Print the analysed model of the simulation and stop"),
+                               cl::cat(WashCategory));
+
+int main(int Argc, const char **Argv) {
+  InitLLVM X(Argc, Argv);
+  // Everything after `--` goes to the compiler, as with clang tools.
+  int Ours = Argc;
+  for (int I = 1; I < Argc; ++I)
+    if (std::strcmp(Argv[I], "--") == 0) {
+      Ours = I;
+      break;
+    }
+  cl::HideUnrelatedOptions(WashCategory);
+  cl::SetVersionPrinter(
+      [](raw_ostream &OS) { OS << "wash " WASH_VERSION " (LLVM " LLVM_VERSION_STRING ")\n"; });
+  if (!cl::ParseCommandLineOptions(Ours, Argv,
+                                   "wash: translates a wash SPH simulation into a specialised "
+                                   "program\n\n  wash [options] <simulation.cpp> [-- <compiler "
+                                   "flags>]\n"))
+    return 1;
+
+  wash::tr::Options Opts;
+  Opts.Source = Source;
+  for (int I = Ours + 1; I < Argc; ++I)
+    Opts.CompilerArgs.push_back(Argv[I]);
+  Opts.Target = TargetBackend;
+  Opts.OutputDir = OutputDir;
+  Opts.DumpModel = DumpModel;
+  Opts.ExecutablePath = sys::fs::getMainExecutable(Argv[0], reinterpret_cast<void *>(&main));
+  return wash::tr::runPipeline(Opts);
+}
