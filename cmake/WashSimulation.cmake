@@ -16,3 +16,34 @@ function(wash_add_reference target)
   add_executable(${target} ${ARG_SOURCE})
   target_link_libraries(${target} PRIVATE wash::reference${ARG_DIM}d)
 endfunction()
+
+# wash_add_simulation(<target> SOURCE <file.cpp> BACKEND serial|openmp|mpi)
+#
+# Translates a simulation source with the wash translator as a build step and
+# builds the generated program against that backend's runtime. The translation
+# reruns when the source changes.
+function(wash_add_simulation target)
+  cmake_parse_arguments(ARG "" "SOURCE;BACKEND" "" ${ARGN})
+  if(NOT ARG_SOURCE OR NOT ARG_BACKEND)
+    message(FATAL_ERROR "wash_add_simulation(${target}): SOURCE and BACKEND are required")
+  endif()
+  if(NOT ARG_BACKEND MATCHES "^(serial|openmp|mpi)$")
+    message(FATAL_ERROR
+      "wash_add_simulation(${target}): BACKEND must be serial, openmp or mpi, not '${ARG_BACKEND}'")
+  endif()
+  if(NOT TARGET wash::wash)
+    message(FATAL_ERROR "wash_add_simulation(${target}): the wash translator is not available")
+  endif()
+  get_filename_component(source "${ARG_SOURCE}" ABSOLUTE)
+  get_filename_component(stem "${source}" NAME_WE)
+  set(dir "${CMAKE_CURRENT_BINARY_DIR}/${target}.wash")
+  set(generated "${dir}/${stem}.${ARG_BACKEND}.cpp")
+  add_custom_command(OUTPUT "${generated}" "${dir}/${stem}.wash.hpp"
+    COMMAND wash::wash --backend=${ARG_BACKEND} "${source}" -o "${dir}"
+    DEPENDS "${source}" wash::wash
+    COMMENT "wash: translating ${stem} for the ${ARG_BACKEND} backend"
+    VERBATIM)
+  add_executable(${target} "${generated}")
+  target_include_directories(${target} PRIVATE "${dir}")
+  target_link_libraries(${target} PRIVATE wash::${ARG_BACKEND})
+endfunction()

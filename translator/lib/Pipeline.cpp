@@ -9,6 +9,7 @@
 #include "wash/translator/Analysis/Liveness.h"
 #include "wash/translator/Analysis/ResolveFields.h"
 #include "wash/translator/Analysis/SummariseAccesses.h"
+#include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/DetectDimension.h"
 #include "wash/translator/Frontend/InferAccesses.h"
@@ -37,9 +38,9 @@ const char *backendName(Backend B) {
 
 /// The passes that need the AST, then the model passes, whose findings are
 /// reported while the AST's source manager can still place them.
-static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M) {
+static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M,
+                    AstRefs &Refs) {
   // Model: read the simulation out of the AST.
-  AstRefs Refs;
   if (!detectDimension(Ctx, D, ParsedDim, M) || !collectSimulation(Ctx, D, M, Refs) ||
       !inferAccesses(Ctx, D, Refs, M))
     return;
@@ -61,10 +62,15 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Mo
 int runPipeline(const Options &Opts) {
   Model M;
   M.SourceFile = Opts.Source;
+  std::vector<GeneratedFile> Files;
   bool Failed = false;
   bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim) {
-    analyse(Ctx, D, Dim, M);
+    AstRefs Refs;
+    analyse(Ctx, D, Dim, M, Refs);
     Failed = D.hasErrors() || M.hasErrors();
+    // Emit: rewrite the user's code and generate the rest, still in memory.
+    if (!Failed && !Opts.DumpModel)
+      Failed = !emitProgram(Ctx, D, M, Refs, Opts, Files) || D.hasErrors();
   });
   if (!Parsed || Failed)
     return 1;
@@ -73,10 +79,13 @@ int runPipeline(const Options &Opts) {
     dumpModel(M, std::cout);
     return std::cout.good() ? 0 : 1;
   }
-  // Emit: the next stage of the project.
-  llvm::errs() << "wash: error: code generation for the '" << backendName(Opts.Target)
-               << "' backend is not implemented yet; use --dump-model\n";
-  return 1;
+  // Write: only once everything succeeded, so an error leaves no partial output.
+  std::string Error = writeProject(Opts.OutputDir, Files);
+  if (!Error.empty()) {
+    llvm::errs() << "wash: error: " << Error << "\n";
+    return 1;
+  }
+  return 0;
 }
 
 } // namespace wash::tr

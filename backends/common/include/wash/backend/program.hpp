@@ -8,6 +8,7 @@
 
 #include <wash/backend/cell_grid.hpp>
 #include <wash/backend/columns.hpp>
+#include <wash/backend/frame_builder.hpp>
 #include <wash/backend/neighbours.hpp>
 #include <wash/backend/run.hpp>
 #include <wash/math.hpp>

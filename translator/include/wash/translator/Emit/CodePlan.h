@@ -1,0 +1,52 @@
+//===- CodePlan.h - what the generated program stores and how it accesses it -*- C++ -*-===//
+//
+// The decisions every part of code generation shares: which fields get a
+// column and under which C++ name, which need a snapshot, the output columns,
+// and the text that replaces each particle access. Clang-free.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include "wash/translator/Model.h"
+#include "wash/translator/Options.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace wash::tr {
+
+struct CodePlan {
+  Backend Target = Backend::Serial;
+  std::string Stem; ///< The simulation file's name without extension.
+  unsigned Dim = 2;
+  bool Float = false; ///< Storage precision.
+
+  /// Every field by name, and the live ones in storage order (Model::Fields
+  /// order) with their member names.
+  std::map<std::string, const Field *> ByName;
+  std::vector<const Field *> Stored;
+  std::map<std::string, std::string> Member;
+  /// Output columns in order (docs/semantics.md); dead ones are written as zeros.
+  std::vector<const Field *> Output;
+  /// Fields some force kernel writes on its particle and reads through
+  /// neighbours: they get a snapshot column and a role-dependent accessor.
+  FieldSet Snapshotted;
+
+  std::string headerName() const { return Stem + ".wash.hpp"; }
+  std::string sourceName() const;
+
+  /// `P.<member>[Object]`, converted to the API type when storage is float.
+  std::string readText(const std::string &Field, const std::string &Object) const;
+  /// `P.<member>[Object] = Value`, converted to the storage type when float.
+  std::string writeText(const std::string &Field, const std::string &Object,
+                        const std::string &Value) const;
+  /// The C++ type of a stored column element, and of a value in the API.
+  std::string storedType(const Field &F) const;
+  std::string apiType(const Field &F) const;
+};
+
+/// Decides storage, names and snapshots for M (which has been analysed).
+CodePlan planCode(const Model &M, Backend Target, const std::string &Stem);
+
+} // namespace wash::tr

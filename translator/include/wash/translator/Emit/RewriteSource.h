@@ -1,0 +1,31 @@
+//===- RewriteSource.h - the user's code, with particle accesses lowered -*- C++ -*-===//
+//
+// The one code-generation pass that needs the AST. The user's kernels and
+// helpers are rewritten in place, not re-typeset, so they stay readable:
+//  - `p.get_vel()` / `p.set_force_scalar("x", v)` become column accesses
+//    (`wash_gen::P.vel[p]`, `wash_gen::P.x[p] = v`), snapshot-aware where needed;
+//  - `wash::Particle&` becomes `wash_gen::Self&`, a `const wash::Particle&` or
+//    a copy `auto` (a self or a neighbour handle), and
+//    `std::vector<wash::Particle>` the backend's neighbour range;
+//  - registration calls become `(void)0`, `wash::start()` the generated
+//    driver, `wash::create_particle` the generated one, and the
+//    `#include <wash/wash.hpp>` the generated storage header.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include "wash/translator/Emit/CodePlan.h"
+#include "wash/translator/Frontend/Diagnoser.h"
+
+#include "clang/AST/ASTContext.h"
+
+#include <optional>
+#include <string>
+
+namespace wash::tr {
+
+/// The rewritten main file, or nothing after an error (reported through D).
+std::optional<std::string> rewriteSource(clang::ASTContext &Ctx, const CodePlan &Plan,
+                                         Diagnoser &D);
+
+} // namespace wash::tr

@@ -1,0 +1,121 @@
+//===- CodePlan.cpp - storage, names and access text for generated code ---===//
+#include "wash/translator/Emit/CodePlan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+
+namespace wash::tr {
+namespace {
+
+bool isIdentifier(const std::string &S) {
+  if (S.empty() || !(std::isalpha((unsigned char)S[0]) || S[0] == '_'))
+    return false;
+  return std::all_of(S.begin(), S.end(),
+                     [](char C) { return std::isalnum((unsigned char)C) || C == '_'; });
+}
+
+/// A member name for force `Name`: the name itself when it is a plain
+/// identifier nothing else uses, else a mangled one.
+std::string memberFor(const std::string &Name, unsigned Index, const std::set<std::string> &Taken) {
+  static const std::set<std::string> Reserved = {
+      // C++ keywords a force might be called, and the generated struct's own names.
+      "auto",   "bool",   "break",    "case",     "char",    "class",    "const",        "default",
+      "delete", "do",     "double",   "else",     "enum",    "float",    "for",          "if",
+      "int",    "long",   "new",      "operator", "private", "public",   "return",       "short",
+      "signed", "sizeof", "static",   "struct",   "switch",  "template", "this",         "throw",
+      "try",    "union",  "unsigned", "void",     "while",   "size",     "forEachColumn"};
+  if (isIdentifier(Name) && !Taken.count(Name) && !Reserved.count(Name) &&
+      Name.rfind("__", 0) != 0 && Name.rfind("force_", 0) != 0)
+    return Name;
+  std::string Mangled = "force_" + std::to_string(Index) + "_";
+  for (char C : Name)
+    Mangled += std::isalnum((unsigned char)C) ? C : '_';
+  return Mangled;
+}
+
+} // namespace
+
+std::string CodePlan::sourceName() const { return Stem + "." + backendName(Target) + ".cpp"; }
+
+std::string CodePlan::storedType(const Field &F) const {
+  if (F.Name == "id")
+    return "std::uint64_t";
+  return F.Kind == ForceKind::Vector ? "wash_gen::Stored" : "wash_gen::Real";
+}
+
+std::string CodePlan::apiType(const Field &F) const {
+  if (F.Name == "id")
+    return "std::size_t";
+  return F.Kind == ForceKind::Vector ? "wash::ParticleVec" : "double";
+}
+
+std::string CodePlan::readText(const std::string &Name, const std::string &Object) const {
+  const Field &F = *ByName.at(Name);
+  if (!F.Live) // Never written: it reads as zero.
+    return apiType(F) + "()";
+  if (Snapshotted.count(Name))
+    return "wash_gen::get_" + Member.at(Name) + "(" + Object + ")";
+  std::string Access = "wash_gen::P." + Member.at(Name) + "[" + Object + "]";
+  if (F.Name == "id")
+    return "std::size_t(" + Access + ")";
+  return Float ? apiType(F) + "(" + Access + ")" : Access;
+}
+
+std::string CodePlan::writeText(const std::string &Name, const std::string &Object,
+                                const std::string &Value) const {
+  auto It = Member.find(Name);
+  if (It == Member.end()) // Dead (acc, never read nor output): keep the value's side effects.
+    return "(void)(" + Value + ")";
+  std::string Target = "wash_gen::P." + It->second + "[" + Object + "]";
+  if (!Float)
+    return Target + " = " + Value;
+  if (ByName.at(Name)->Kind == ForceKind::Vector)
+    return Target + " = wash_gen::Stored(wash::ParticleVec(" + Value + "))";
+  return Target + " = wash_gen::Real(" + Value + ")";
+}
+
+CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
+  CodePlan Plan;
+  Plan.Target = Target;
+  Plan.Stem = Stem;
+  Plan.Dim = M.Sim.Dimension;
+  Plan.Float = M.Sim.Precision == "float";
+
+  std::set<std::string> Taken;
+  for (const std::string &B : builtinFieldNames())
+    Taken.insert(B);
+  unsigned Index = 0;
+  for (const Field &F : M.Fields) {
+    ++Index;
+    Plan.ByName[F.Name] = &F;
+    if (!F.Live)
+      continue;
+    Plan.Stored.push_back(&F);
+    std::string Member =
+        F.Origin == FieldOrigin::Builtin ? F.Name : memberFor(F.Name, Index, Taken);
+    Taken.insert(Member);
+    Plan.Member[F.Name] = Member;
+  }
+
+  // Output: builtins (not acc), registered forces in order, created ones by name.
+  for (const char *B : {"pos", "vel", "density", "mass", "smoothing_length"})
+    if (const Field *F = M.findField(B))
+      Plan.Output.push_back(F);
+  for (const ForceRegistration &R : M.Forces)
+    if (const Field *F = M.findField(R.Name))
+      Plan.Output.push_back(F);
+  std::vector<const Field *> Created;
+  for (const Field &F : M.Fields)
+    if (F.Origin == FieldOrigin::Created)
+      Created.push_back(&F);
+  std::sort(Created.begin(), Created.end(),
+            [](const Field *A, const Field *B) { return A->Name < B->Name; });
+  Plan.Output.insert(Plan.Output.end(), Created.begin(), Created.end());
+
+  for (const Kernel &K : M.Kernels)
+    Plan.Snapshotted.insert(K.Hazards.begin(), K.Hazards.end());
+  return Plan;
+}
+
+} // namespace wash::tr

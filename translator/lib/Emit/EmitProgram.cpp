@@ -1,0 +1,83 @@
+//===- EmitProgram.cpp - plan, rewrite, emit ------------------------------===//
+#include "wash/translator/Emit/EmitProgram.h"
+#include "wash/translator/Emit/CodePlan.h"
+#include "wash/translator/Emit/EmitSharedMemory.h"
+#include "wash/translator/Emit/RewriteSource.h"
+
+#include "llvm/Support/FileSystem.h"
+#include "llvm/Support/Path.h"
+#include "llvm/Support/raw_ostream.h"
+
+#include <algorithm>
+
+#ifndef WASH_BUILD_PACKAGE_DIR
+#define WASH_BUILD_PACKAGE_DIR ""
+#endif
+
+namespace wash::tr {
+namespace {
+
+/// A name for FD that the driver, at namespace scope, can call.
+std::string calleeName(const clang::FunctionDecl *FD) {
+  std::string Name = FD->getQualifiedNameAsString();
+  const std::string Anonymous = "(anonymous namespace)::";
+  for (size_t At; (At = Name.find(Anonymous)) != std::string::npos;)
+    Name.erase(At, Anonymous.size());
+  return "::" + Name;
+}
+
+/// Where the generated CMakeLists.txt looks for wash: next to an installed
+/// translator first, then the build tree this translator was built in.
+std::vector<std::string> packageHints(const Options &Opts) {
+  std::vector<std::string> Hints;
+  llvm::SmallString<256> Installed(llvm::sys::path::parent_path(Opts.ExecutablePath));
+  llvm::sys::path::append(Installed, "..", "lib", "cmake", "wash");
+  llvm::sys::path::remove_dots(Installed, true);
+  if (llvm::sys::fs::exists(Installed + "/washConfig.cmake"))
+    Hints.push_back(std::string(Installed));
+  if (std::string(WASH_BUILD_PACKAGE_DIR) != "")
+    Hints.push_back(WASH_BUILD_PACKAGE_DIR);
+  return Hints;
+}
+
+std::string absolute(const std::string &Path) {
+  llvm::SmallString<256> P(Path);
+  llvm::sys::fs::make_absolute(P);
+  llvm::sys::path::remove_dots(P, true);
+  return std::string(P);
+}
+
+} // namespace
+
+bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
+                 const Options &Opts, std::vector<GeneratedFile> &Files) {
+  if (Opts.Target == Backend::MPI) {
+    llvm::errs() << "wash: error: code generation for the 'mpi' backend is not implemented yet\n";
+    return false;
+  }
+  CodePlan Plan = planCode(M, Opts.Target, llvm::sys::path::stem(Opts.Source).str());
+  std::optional<std::string> Body = rewriteSource(Ctx, Plan, D);
+  if (!Body)
+    return false;
+  if (Body->empty() || Body->back() != '\n')
+    *Body += '\n';
+
+  std::vector<std::string> Callees;
+  for (const clang::FunctionDecl *FD : Refs.Kernels)
+    Callees.push_back(calleeName(FD));
+
+  // The user's code keeps its own file name and line numbers (#line), so
+  // compiler messages and source_location point at the simulation source.
+  std::string Source = generatedBanner(Plan) + "#line 1 \"" + absolute(Opts.Source) + "\"\n" +
+                       *Body;
+  size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;
+  Source += "#line " + std::to_string(NextLine) + " \"" + Plan.sourceName() + "\"\n" +
+            emitSharedMemoryDriver(M, Plan, Callees);
+
+  Files = {{Plan.headerName(), emitStorageHeader(M, Plan)},
+           {Plan.sourceName(), Source},
+           {"CMakeLists.txt", emitCMakeLists(Plan, packageHints(Opts))}};
+  return true;
+}
+
+} // namespace wash::tr

@@ -1,0 +1,214 @@
+//===- RewriteSource.cpp - lowering particle accesses in the user's code --===//
+#include "wash/translator/Emit/RewriteSource.h"
+#include "wash/translator/Frontend/WashApi.h"
+
+#include "clang/AST/ParentMapContext.h"
+#include "clang/AST/RecursiveASTVisitor.h"
+#include "clang/Lex/Lexer.h"
+#include "clang/Rewrite/Core/Rewriter.h"
+#include "llvm/Support/Regex.h"
+
+#include <cctype>
+#include <set>
+
+using namespace clang;
+
+namespace wash::tr {
+namespace {
+
+bool isParticleType(QualType T) {
+  const auto *RD = T.isNull() ? nullptr : T.getCanonicalType()->getAsCXXRecordDecl();
+  return RD && !isa<ClassTemplateSpecializationDecl>(RD) && involvesParticle(T);
+}
+
+bool isParticleVector(QualType T) {
+  const auto *Spec = T.isNull() ? nullptr
+                                : dyn_cast_or_null<ClassTemplateSpecializationDecl>(
+                                      T.getCanonicalType()->getAsCXXRecordDecl());
+  return Spec && Spec->getName() == "vector" && involvesParticle(T);
+}
+
+class Lowering : public RecursiveASTVisitor<Lowering> {
+public:
+  Lowering(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D, Rewriter &R)
+      : Ctx(Ctx), SM(Ctx.getSourceManager()), Plan(Plan), D(D), R(R) {}
+
+  // Children first, so that an access's arguments are lowered before it.
+  bool shouldTraversePostOrder() const { return true; }
+
+  bool TraverseDecl(Decl *Decl) {
+    // Only the user's file: the API and system headers stay as they are.
+    if (Decl && !isa<TranslationUnitDecl>(Decl) && !inMainFile(Decl->getBeginLoc()))
+      return true;
+    return RecursiveASTVisitor::TraverseDecl(Decl);
+  }
+
+  bool TraverseTypeLoc(TypeLoc TL) {
+    if (!TL || !inMainFile(TL.getBeginLoc()))
+      return RecursiveASTVisitor::TraverseTypeLoc(TL);
+    if (auto Ref = TL.getAs<LValueReferenceTypeLoc>()) {
+      TypeLoc Pointee = Ref.getPointeeLoc();
+      if (isParticleType(Pointee.getType()) && !Pointee.getType().isConstQualified())
+        return replace({withQualifier(Pointee.getBeginLoc()), Pointee.getEndLoc()},
+                       "wash_gen::Self");
+    }
+    if (!TL.getAs<QualifiedTypeLoc>()) {
+      QualType T = TL.getType();
+      if (isParticleVector(T))
+        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "wash_gen::NeighbourList");
+      if (isParticleType(T)) // a const reference or a copy: a self or a neighbour
+        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "auto");
+    }
+    return RecursiveASTVisitor::TraverseTypeLoc(TL);
+  }
+
+  bool VisitCXXMemberCallExpr(CXXMemberCallExpr *E) {
+    if (!inMainFile(E->getBeginLoc()) || !isParticleMethod(E->getMethodDecl()))
+      return true;
+    const auto *Callee = dyn_cast<MemberExpr>(E->getCallee()->IgnoreParens());
+    if (!Callee)
+      return true;
+    std::string Object = text(Callee->getBase()->getSourceRange());
+    if (Callee->isArrow())
+      Object = "(*" + Object + ")";
+    StringRef Method = E->getMethodDecl()->getName();
+    bool IsSet = Method.starts_with("set_");
+    std::string Field, Value;
+    unsigned ValueArg = 0;
+    if (Method.ends_with("_force_scalar") || Method.ends_with("_force_vector")) {
+      auto Name = evaluateString(E->getArg(0), Ctx);
+      if (!Name) // InferAccesses already rejected this; keep the pass total.
+        return true;
+      Field = *Name;
+      ValueArg = 1;
+    } else {
+      Field = Method.drop_front(4).str(); // get_/set_
+    }
+    if (IsSet)
+      Value = text(E->getArg(ValueArg)->getSourceRange());
+    std::string Lowered = IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object);
+    if (IsSet && !isStatement(E))
+      Lowered = "(" + Lowered + ")";
+    return replace(E->getSourceRange(), Lowered);
+  }
+
+  bool VisitCallExpr(CallExpr *E) {
+    const FunctionDecl *FD = E->getDirectCallee();
+    if (!inMainFile(E->getBeginLoc()) || !isWashFunction(FD))
+      return true;
+    StringRef Name = FD->getName();
+    if (Name == "add_force" || Name == "add_init_kernel" || Name == "add_update_kernel" ||
+        Name == "add_force_kernel")
+      return replace(E->getSourceRange(), "(void)0 /* registered by the translator */");
+    if (Name == "start" || Name == "create_particle")
+      return replace(E->getCallee()->getSourceRange(), "wash_gen::" + Name.str());
+    return true;
+  }
+
+  /// The `#include <wash/wash.hpp>` line becomes the generated header's.
+  void replaceApiInclude() {
+    FileID Main = SM.getMainFileID();
+    StringRef Buffer = SM.getBufferData(Main);
+    llvm::Regex Include("^[ \t]*#[ \t]*include[ \t]*[<\"]wash/wash\\.hpp[>\"]");
+    size_t Offset = 0;
+    while (Offset < Buffer.size()) {
+      size_t End = Buffer.find('\n', Offset);
+      StringRef Line = Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
+      if (Include.match(Line)) {
+        SourceLocation Begin = SM.getLocForStartOfFile(Main).getLocWithOffset(Offset);
+        R.ReplaceText(Begin, Line.size(), "#include \"" + Plan.headerName() + "\"");
+        return;
+      }
+      if (End == StringRef::npos)
+        break;
+      Offset = End + 1;
+    }
+  }
+
+private:
+  bool inMainFile(SourceLocation L) const {
+    return L.isValid() && SM.isWrittenInMainFile(SM.getExpansionLoc(L));
+  }
+
+  /// Begin moved back over a written `std::` or `wash::` (or `::wash::`,
+  /// `a::b::`) that the TypeLoc under a cv-qualifier does not cover.
+  SourceLocation withQualifier(SourceLocation Begin) const {
+    if (Begin.isMacroID())
+      return Begin;
+    const char *Start = SM.getBufferData(SM.getFileID(Begin)).data();
+    const char *P = SM.getCharacterData(Begin);
+    while (true) {
+      const char *Q = P;
+      while (Q > Start && (Q[-1] == ' ' || Q[-1] == '\t'))
+        --Q;
+      if (Q - Start < 2 || Q[-1] != ':' || Q[-2] != ':')
+        break;
+      Q -= 2;
+      while (Q > Start && (Q[-1] == ' ' || Q[-1] == '\t'))
+        --Q;
+      while (Q > Start && (std::isalnum((unsigned char)Q[-1]) || Q[-1] == '_'))
+        --Q;
+      P = Q;
+    }
+    return Begin.getLocWithOffset(-(SM.getCharacterData(Begin) - P));
+  }
+
+  /// The text of a range as rewritten so far.
+  std::string text(SourceRange Range) const {
+    return R.getRewrittenText(CharSourceRange::getTokenRange(Range));
+  }
+
+  /// Whether E's value is unused: it is a statement of its own.
+  bool isStatement(const Expr *E) const {
+    auto Parents = Ctx.getParents(*E);
+    if (Parents.empty())
+      return false;
+    if (const auto *P = Parents[0].get<Stmt>())
+      return !isa<Expr>(P) || isa<ExprWithCleanups>(P) && isStatement(cast<Expr>(P));
+    return false;
+  }
+
+  /// Replaces Range (token range) keeping the number of lines, so the user's
+  /// line numbers still hold in the generated file.
+  bool replace(SourceRange Range, std::string Text) {
+    // The traversal can reach one TypeLoc twice (a parameter through its
+    // declaration and through the function's type): rewrite each range once.
+    if (!Done.insert({Range.getBegin().getRawEncoding(), Range.getEnd().getRawEncoding()}).second)
+      return true;
+    if (Range.getBegin().isMacroID() || Range.getEnd().isMacroID()) {
+      D.report(DiagId::CodegenInMacro, Range.getBegin());
+      return true;
+    }
+    std::string Old = text(Range);
+    size_t Lines = std::count(Old.begin(), Old.end(), '\n');
+    size_t NewLines = std::count(Text.begin(), Text.end(), '\n');
+    if (NewLines < Lines)
+      Text.append(Lines - NewLines, '\n');
+    R.ReplaceText(CharSourceRange::getTokenRange(Range), Text);
+    return true;
+  }
+
+  ASTContext &Ctx;
+  SourceManager &SM;
+  const CodePlan &Plan;
+  Diagnoser &D;
+  Rewriter &R;
+  std::set<std::pair<unsigned, unsigned>> Done;
+};
+
+} // namespace
+
+std::optional<std::string> rewriteSource(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D) {
+  Rewriter R(Ctx.getSourceManager(), Ctx.getLangOpts());
+  Lowering L(Ctx, Plan, D, R);
+  L.TraverseDecl(Ctx.getTranslationUnitDecl());
+  L.replaceApiInclude();
+  if (D.hasErrors())
+    return std::nullopt;
+  FileID Main = Ctx.getSourceManager().getMainFileID();
+  if (const RewriteBuffer *B = R.getRewriteBufferFor(Main))
+    return std::string(B->begin(), B->end());
+  return Ctx.getSourceManager().getBufferData(Main).str();
+}
+
+} // namespace wash::tr
