@@ -18,10 +18,8 @@ std::vector<std::vector<std::uint64_t>> backendNeighbours(Column<PosT> pos,
   CellGrid<D> grid;
   std::vector<Index> order;
   grid.sort(pos, id, r, order);
-  Column<PosT> sp;
-  Column<std::uint64_t> si;
-  permute(pos, order, sp);
-  permute(id, order, si);
+  permute(pos, order);
+  permute(id, order);
   std::vector<std::vector<std::uint64_t>> out(pos.size());
   for (Index i = 0; i < pos.size(); ++i) {
     Neighbours<D, PosT> neighbours(grid, pos, i);

@@ -151,10 +151,10 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
        << "> " << Plan.Member.at(F->Name) << ";"
        << (F->OutputOnly ? " // output only" : "") << "\n";
   OS << "\n  std::size_t size() const { return id.size(); }\n"
-     << "  /// Calls f(column, other's column) for every column.\n"
-     << "  template <typename F> void forEachColumn(Particles &other, F f) {\n";
+     << "  /// Calls f(column) for every column.\n"
+     << "  template <typename F> void forEachColumn(F f) {\n";
   for (const Field *F : Plan.Stored)
-    OS << "    f(" << Plan.Member.at(F->Name) << ", other." << Plan.Member.at(F->Name) << ");\n";
+    OS << "    f(" << Plan.Member.at(F->Name) << ");\n";
   OS << "  }\n};\ninline Particles P;\n";
 
   for (const std::string &F : Plan.Snapshotted) {
@@ -187,14 +187,12 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << " backend) =====\n\n"
      << "namespace wash_gen {\nnamespace {\n"
      << "wash::backend::CellGrid<" << Plan.Dim << "> grid;\n"
-     << "std::vector<Index> order;\n"
-     << "Particles spare; // reordering scratch\n\n"
+     << "std::vector<Index> order;\n\n"
      << "/// A neighbour search: particles sorted by (cell, id), see docs/semantics.md.\n"
      << "void sortByCell(double radius) {\n"
      << "  grid.sort(P.pos, P.id, radius, order);\n"
-     << "  P.forEachColumn(spare, [](auto &column, auto &scratch) {\n"
-     << "    wash::backend::permute(column, order, scratch);\n"
-     << "  });\n}\n\n";
+     << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
+     << "}\n\n";
   emitFrame(OS, Plan);
   OS << "} // namespace\n\n";
   emitCreateParticle(OS, Plan);

@@ -40,15 +40,12 @@ public:
     if (n > std::numeric_limits<Index>::max())
       throw std::length_error("wash: more particles than the index type holds");
     radius_ = r;
-    cell_.resize(n);
     std::array<std::int64_t, D> lo, hi;
     lo.fill(std::numeric_limits<std::int64_t>::max());
     hi.fill(std::numeric_limits<std::int64_t>::min());
-    coords_.resize(n);
     for (std::size_t p = 0; p < n; ++p)
       for (int a = 0; a < D; ++a) {
         std::int64_t c = coordinate(double(pos[p].at(a)));
-        coords_[p][a] = c;
         lo[a] = std::min(lo[a], c);
         hi[a] = std::max(hi[a], c);
       }
@@ -58,8 +55,16 @@ public:
       dims_[a] = n ? hi[a] - lo[a] + 1 : 1;
       cells *= std::size_t(dims_[a]);
     }
-    for (std::size_t p = 0; p < n; ++p)
-      cell_[p] = linear(coords_[p]);
+    if (cells > std::numeric_limits<Index>::max())
+      throw std::length_error("wash: the particles span more cells than the grid can index; "
+                              "is a particle far outside the others?");
+    cell_.resize(n);
+    for (std::size_t p = 0; p < n; ++p) {
+      std::array<std::int64_t, D> c;
+      for (int a = 0; a < D; ++a)
+        c[a] = coordinate(double(pos[p].at(a)));
+      cell_[p] = Index(linear(c));
+    }
     // Counting sort by cell (stable), then ids ascending inside each cell.
     cellStart_.assign(cells + 1, 0);
     for (std::size_t p = 0; p < n; ++p)
@@ -120,9 +125,7 @@ private:
 
   double radius_ = 1.0;
   std::array<std::int64_t, D> lo_{}, dims_{};
-  std::vector<Index> cellStart_, fill_;
-  std::vector<std::size_t> cell_;
-  std::vector<std::array<std::int64_t, D>> coords_;
+  std::vector<Index> cellStart_, fill_, cell_;
 };
 
 } // namespace wash::backend

@@ -1,0 +1,211 @@
+#!/usr/bin/env bash
+# run_bench.sh - speed of the seed simulation's builds, in one table.
+#
+# Runs, at each size, the reference build, the hand-written baseline
+# (bench/handwritten) at each thread count, and any further programs given
+# (e.g. the translator's build/bin/ca_fluid_sim-serial and -openmp), on the seed
+# scene scaled to that many particles at the same density, and prints:
+#
+#   size, program, threads, steps, wall s, ns per particle-step, ratio to the
+#   hand-written serial run at that size, peak RSS per particle (bytes)
+#
+# Measurement: wall time of the whole process (date +%s%N around it), the
+# minimum of --repeat runs. "ns/p-step" is the cost of the steps alone:
+#   (wall(S steps) - wall(0 steps)) / (N * S)
+# where the 0-step run of the same program (spawn, the final frame the program
+# always writes, startup) is measured the same way; "wall s" is the S-step run
+# as it is. Peak RSS comes from /usr/bin/time -f %M (GNU time) when installed.
+# Nothing here is asserted: speed is measured, never tested.
+#
+# Which binary runs at size N: for the seed size 4032, the program as given;
+# for another N, the same name with "ca_fluid_sim" replaced by "ca_fluid_sim_N"
+# (bench/CMakeLists.txt builds ca_fluid_sim_N-reference from
+# bench/scenes/make_scaled_seed.sh; translated builds of the same sources
+# follow the same naming). The hand-written program takes --size N instead.
+# A binary that does not exist gives a "not built" row.
+#
+# usage: bench/run_bench.sh [options]
+#   --bin DIR              where the programs are (default: build/bin)
+#   --sizes "N ..."        particle counts (default: "4032 65536")
+#   --with-1m              also run 1048576 particles (few steps)
+#   --threads "T ..."      OpenMP thread counts (default: "1 2")
+#   --steps S              steps at every size (default: 1000 at <= 4032,
+#                          200 at <= 65536, 10 above)
+#   --steps-for N:S        steps at size N only (repeatable)
+#   --repeat R             runs per measurement, minimum taken (default 1)
+#   --program PATH         a further program run at every thread count
+#                          (OMP_NUM_THREADS), e.g. build/bin/ca_fluid_sim-openmp
+#   --serial-program PATH  a further program run once, threads 1,
+#                          e.g. build/bin/ca_fluid_sim-serial
+#   --no-reference         skip the reference build (slow at large sizes)
+#   --csv FILE             also write the table as CSV
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+bin=$here/../build/bin
+sizes="4032 65536"
+threads_list="1 2"
+steps_all=""
+declare -A steps_for=()
+repeat=1
+with_ref=1
+csv=""
+parallel_programs=()
+serial_programs=()
+
+die() { echo "run_bench.sh: $*" >&2; exit 2; }
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --bin) bin=$2; shift 2 ;;
+    --sizes) sizes=$2; shift 2 ;;
+    --with-1m) sizes="$sizes 1048576"; shift ;;
+    --threads) threads_list=$2; shift 2 ;;
+    --steps) steps_all=$2; shift 2 ;;
+    --steps-for) [[ $2 =~ ^([0-9]+):([0-9]+)$ ]] || die "--steps-for expects N:S, got '$2'"
+                 steps_for[${BASH_REMATCH[1]}]=${BASH_REMATCH[2]}; shift 2 ;;
+    --repeat) repeat=$2; shift 2 ;;
+    --program) parallel_programs+=("$2"); shift 2 ;;
+    --serial-program) serial_programs+=("$2"); shift 2 ;;
+    --no-reference) with_ref=0; shift ;;
+    --csv) csv=$2; shift 2 ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    *) die "unknown option '$1' (see --help)" ;;
+  esac
+done
+[[ $repeat =~ ^[1-9][0-9]*$ ]] || die "--repeat expects a positive integer"
+
+have_time=0
+if [[ -x /usr/bin/time ]] && /usr/bin/time -f %M -o /dev/null true 2>/dev/null; then
+  have_time=1
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+steps_at() {
+  local n=$1
+  if [[ -n ${steps_for[$n]:-} ]]; then echo "${steps_for[$n]}"
+  elif [[ -n $steps_all ]]; then echo "$steps_all"
+  elif (( n <= 4032 )); then echo 1000
+  elif (( n <= 65536 )); then echo 200
+  else echo 10; fi
+}
+
+# binary_at PATH N: the program for size N (see the header).
+binary_at() {
+  local path=$1 n=$2
+  if (( n == 4032 )); then echo "$path"; return; fi
+  local dir base
+  dir=$(dirname "$path")
+  base=$(basename "$path")
+  echo "$dir/${base/ca_fluid_sim/ca_fluid_sim_$n}"
+}
+
+# measure THREADS STEPS CMD...: prints "wall_s rss_kb" (best wall of $repeat runs).
+measure() {
+  local threads=$1 steps=$2
+  shift 2
+  local best="" rss="" r
+  for ((r = 0; r < repeat; r++)); do
+    rm -rf "$work/out"
+    local t0 t1 status=0
+    t0=$(date +%s%N)
+    if (( have_time )); then
+      OMP_NUM_THREADS=$threads /usr/bin/time -f %M -o "$work/rss" \
+        "$@" --steps "$steps" --quiet --out "$work/out" >"$work/log" 2>&1 || status=$?
+    else
+      OMP_NUM_THREADS=$threads "$@" --steps "$steps" --quiet --out "$work/out" \
+        >"$work/log" 2>&1 || status=$?
+    fi
+    t1=$(date +%s%N)
+    if (( status != 0 )); then
+      echo "run_bench.sh: '$*' --steps $steps failed (status $status):" >&2
+      tail -n 5 "$work/log" >&2
+      echo "failed -"
+      return
+    fi
+    local wall=$(( t1 - t0 ))
+    if [[ -z $best ]] || (( wall < best )); then best=$wall; fi
+    if (( have_time )); then
+      local kb
+      kb=$(tail -n 1 "$work/rss")
+      if [[ -z $rss ]] || (( kb > rss )); then rss=$kb; fi
+    fi
+  done
+  echo "$(awk -v ns="$best" 'BEGIN { printf "%.4f", ns / 1e9 }') ${rss:--}"
+}
+
+rows=() # size|program|threads|steps|wall|ns|rss_kb
+add_row() { rows+=("$1|$2|$3|$4|$5|$6|$7"); }
+
+# bench_one SIZE LABEL THREADS CMD...
+bench_one() {
+  local n=$1 label=$2 threads=$3
+  shift 3
+  local steps
+  steps=$(steps_at "$n")
+  if [[ ! -x $1 ]]; then
+    add_row "$n" "$label" "$threads" "$steps" "not built" "-" "-"
+    return
+  fi
+  echo "  $label, $n particles, $threads thread(s), $steps steps ..." >&2
+  local wall rss wall0
+  read -r wall rss <<<"$(measure "$threads" "$steps" "$@")"
+  if [[ $wall == failed ]]; then
+    add_row "$n" "$label" "$threads" "$steps" "failed" "-" "-"
+    return
+  fi
+  read -r wall0 _ <<<"$(measure "$threads" 0 "$@")"
+  local ns="-"
+  if [[ $wall0 != failed ]] && (( steps > 0 )); then
+    ns=$(awk -v w="$wall" -v w0="$wall0" -v n="$n" -v s="$steps" \
+      'BEGIN { printf "%.1f", (w - w0) * 1e9 / (n * s) }')
+  fi
+  add_row "$n" "$label" "$threads" "$steps" "$wall" "$ns" "$rss"
+}
+
+echo "run_bench.sh: $(nproc) CPUs, sizes: $sizes, threads: $threads_list, repeat $repeat" >&2
+for n in $sizes; do
+  if (( with_ref )); then
+    ref=$(binary_at "$bin/ca_fluid_sim-reference" "$n")
+    bench_one "$n" "$(basename "$ref")" 1 "$ref"
+  fi
+  for t in $threads_list; do
+    bench_one "$n" "ca_fluid_sim-handwritten" "$t" "$bin/ca_fluid_sim-handwritten" --size "$n"
+  done
+  for p in "${serial_programs[@]+"${serial_programs[@]}"}"; do
+    b=$(binary_at "$p" "$n")
+    bench_one "$n" "$(basename "$b")" 1 "$b"
+  done
+  for p in "${parallel_programs[@]+"${parallel_programs[@]}"}"; do
+    b=$(binary_at "$p" "$n")
+    for t in $threads_list; do
+      bench_one "$n" "$(basename "$b")" "$t" "$b"
+    done
+  done
+done
+
+# The table, with the ratio to the hand-written serial run at the same size.
+declare -A base=()
+for row in "${rows[@]}"; do
+  IFS='|' read -r n label t steps wall ns rss <<<"$row"
+  if [[ $label == ca_fluid_sim-handwritten && $t == 1 && $ns != - ]]; then base[$n]=$ns; fi
+done
+fmt="%-9s %-34s %7s %6s %10s %12s %9s %12s\n"
+printf "$fmt" size program threads steps "wall s" "ns/p-step" ratio "RSS B/part"
+[[ -n $csv ]] && echo "size,program,threads,steps,wall_s,ns_per_particle_step,ratio_to_handwritten_serial,peak_rss_bytes_per_particle" >"$csv"
+for row in "${rows[@]}"; do
+  IFS='|' read -r n label t steps wall ns rss <<<"$row"
+  ratio="-"
+  if [[ $ns != - && -n ${base[$n]:-} ]]; then
+    ratio=$(awk -v a="$ns" -v b="${base[$n]}" 'BEGIN { printf "%.2f", a / b }')
+  fi
+  per="-"
+  if [[ $rss != - ]]; then per=$(awk -v kb="$rss" -v n="$n" 'BEGIN { printf "%.0f", kb * 1024 / n }'); fi
+  printf "$fmt" "$n" "$label" "$t" "$steps" "$wall" "$ns" "$ratio" "$per"
+  [[ -n $csv ]] && echo "$n,$label,$t,$steps,$wall,$ns,$ratio,$per" >>"$csv"
+done
+if (( ! have_time )); then
+  echo "(peak RSS not measured: GNU time is not installed at /usr/bin/time)"
+fi
+echo "(ns/p-step = (wall of S steps - wall of 0 steps) / (particles * S); ratio = ns/p-step over the hand-written program's with 1 thread)"
