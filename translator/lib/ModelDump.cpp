@@ -90,6 +90,7 @@ void dumpModel(const Model &M, std::ostream &OS) {
     printSet(M, OS, "hazards", K.Hazards);
     OS << "    search: " << K.SearchGroup << '\n';
     printSet(M, OS, "halo", K.HaloFields);
+    printSet(M, OS, "halo-exchange", K.HaloSends);
   }
 
   OS << "neighbour-searches\n";

@@ -17,3 +17,4 @@ int main() {
 }
 // CHECK:      own-reads: mass
 // CHECK:      halo: pos density t
+// CHECK:      halo-exchange: pos density t

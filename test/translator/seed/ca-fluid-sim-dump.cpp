@@ -41,6 +41,7 @@
 // CHECK-NEXT:    hazards: -
 // CHECK-NEXT:    search: 0
 // CHECK-NEXT:    halo: pos
+// CHECK-NEXT:    halo-exchange: pos
 // CHECK-NEXT:  3: force force_kernel @106:5
 // CHECK-NEXT:    own-reads: pos vel density nearDensity
 // CHECK-NEXT:    own-writes: vel pressure viscosity
@@ -48,6 +49,7 @@
 // CHECK-NEXT:    hazards: vel
 // CHECK-NEXT:    search: 0
 // CHECK-NEXT:    halo: pos vel density nearDensity
+// CHECK-NEXT:    halo-exchange: vel density nearDensity
 // CHECK-NEXT:  4: update UpdatePositions @107:5
 // CHECK-NEXT:    own-reads: vel position
 // CHECK-NEXT:    own-writes: position

@@ -80,8 +80,9 @@ struct Kernel {
   FieldSet Hazards;
   // Filled by planNeighbourSearch (force kernels only).
   int SearchGroup = -1;
-  // Filled by planHalos (force kernels only): fields halo particles need.
-  FieldSet HaloFields;
+  // Filled by planHalos (force kernels only): fields halo particles need, and
+  // those that must be sent before this kernel (the rest are still current).
+  FieldSet HaloFields, HaloSends;
 };
 
 enum class FieldOrigin { Builtin, Registered, Created };
