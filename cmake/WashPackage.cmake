@@ -20,5 +20,6 @@ file(WRITE "${PROJECT_BINARY_DIR}/washConfig.cmake"
   "# wash, used from its build tree (${PROJECT_BINARY_DIR}).\n"
   "include(CMakeFindDependencyMacro)\n"
   "find_dependency(OpenMP COMPONENTS CXX)\n"
+  "find_dependency(MPI COMPONENTS CXX)\n"
   "include(\"\${CMAKE_CURRENT_LIST_DIR}/washTargets.cmake\")\n"
   "include(\"${PROJECT_SOURCE_DIR}/cmake/WashSimulation.cmake\")\n")

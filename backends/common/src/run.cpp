@@ -15,8 +15,8 @@ detail::RunOptions &programOptions() {
   return o;
 }
 
-Run::Run(const char *backend, int dimensions, bool translatedForFloat)
-    : backend_(backend), dimensions_(dimensions), useFloat_(translatedForFloat) {
+Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writes)
+    : backend_(backend), dimensions_(dimensions), useFloat_(translatedForFloat), writes_(writes) {
   const Settings &s = settings();
   const detail::RunOptions &o = programOptions();
   if (s.useFloat && *s.useFloat != translatedForFloat)
@@ -30,14 +30,29 @@ Run::Run(const char *backend, int dimensions, bool translatedForFloat)
     throw detail::RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
   steps_ = o.steps ? *o.steps : *s.maxIterations;
   radius_ = *s.influenceRadius;
-  output_ = std::make_unique<detail::RunOutput>(
-      o, s.outputFileName.empty() ? s.simulationName : s.outputFileName);
+  if (writes_)
+    output_ = std::make_unique<detail::RunOutput>(
+        o, s.outputFileName.empty() ? s.simulationName : s.outputFileName);
+}
+
+bool Run::frameDue(std::uint64_t step) const {
+  return detail::frameDue(programOptions(), step, steps_);
+}
+
+void Run::write(std::uint64_t step, const detail::Frame &frame) {
+  if (output_)
+    output_->writeFrame(step, frame);
+}
+
+void Run::report(const std::string &line) const {
+  if (writes_ && !programOptions().quiet)
+    std::printf("%s\n", line.c_str());
 }
 
 Run::~Run() = default;
 
 void Run::started(std::size_t particles) {
-  const bool talk = !programOptions().quiet;
+  const bool talk = writes_ && !programOptions().quiet;
   if (talk)
     std::printf("wash %s: '%s', %zu particles, %dD, %s, influence radius %g, %llu steps\n",
                 backend_.c_str(), settings().simulationName.c_str(), particles, dimensions_,
@@ -48,6 +63,8 @@ void Run::started(std::size_t particles) {
 
 void Run::finish(const detail::Frame &finalFrame) {
   double seconds = progress_->finish();
+  if (!output_)
+    return;
   output_->finish(finalFrame);
   if (!programOptions().quiet)
     std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); output in %s\n",

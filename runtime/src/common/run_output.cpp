@@ -40,10 +40,10 @@ RunOutput::RunOutput(const RunOptions &options, std::string baseName)
   fs::remove(probe, ec);
 }
 
-bool RunOutput::frameDue(std::uint64_t step, std::uint64_t lastStep) const {
+bool frameDue(const RunOptions &options, std::uint64_t step, std::uint64_t lastStep) {
   if (step == lastStep)
     return true;
-  return options_.outputEvery > 0 && step % options_.outputEvery == 0;
+  return options.outputEvery > 0 && step % options.outputEvery == 0;
 }
 
 std::string RunOutput::framePath(std::uint64_t step) const {

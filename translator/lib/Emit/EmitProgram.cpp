@@ -1,6 +1,7 @@
 //===- EmitProgram.cpp - plan, rewrite, emit ------------------------------===//
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Emit/CodePlan.h"
+#include "wash/translator/Emit/EmitMpi.h"
 #include "wash/translator/Emit/EmitSharedMemory.h"
 #include "wash/translator/Emit/RewriteSource.h"
 
@@ -51,10 +52,6 @@ std::string absolute(const std::string &Path) {
 
 bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
                  const Options &Opts, std::vector<GeneratedFile> &Files) {
-  if (Opts.Target == Backend::MPI) {
-    llvm::errs() << "wash: error: code generation for the 'mpi' backend is not implemented yet\n";
-    return false;
-  }
   CodePlan Plan = planCode(M, Opts.Target, llvm::sys::path::stem(Opts.Source).str());
   std::optional<std::string> Body = rewriteSource(Ctx, Plan, D);
   if (!Body)
@@ -72,7 +69,8 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
                        *Body;
   size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;
   Source += "#line " + std::to_string(NextLine) + " \"" + Plan.sourceName() + "\"\n" +
-            emitSharedMemoryDriver(M, Plan, Callees);
+            (Plan.Target == Backend::MPI ? emitMpiDriver(M, Plan, Callees)
+                                         : emitSharedMemoryDriver(M, Plan, Callees));
 
   Files = {{Plan.headerName(), emitStorageHeader(M, Plan)},
            {Plan.sourceName(), Source},

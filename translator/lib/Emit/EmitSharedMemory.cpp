@@ -7,6 +7,7 @@
 //
 //===----------------------------------------------------------------------===//
 #include "wash/translator/Emit/EmitSharedMemory.h"
+#include "wash/translator/Emit/DriverParts.h"
 
 #include <sstream>
 
@@ -21,95 +22,21 @@ std::string loopNamespace(Backend B) { return B == Backend::OpenMP ? "wash::open
 
 bool isForce(const Kernel &K) { return K.Kind == KernelKind::Force; }
 
-/// Fields a kernel writes that are stored (a dead write needs no check).
-std::vector<std::string> checkedWrites(const Kernel &K, const CodePlan &Plan) {
-  std::vector<std::string> Out;
-  for (const std::string &F : K.OwnWrites)
-    if (Plan.Member.count(F) && F != "id")
-      Out.push_back(F);
-  return Out;
-}
-
-void emitChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan, const char *Step,
-                const std::string &Indent) {
-  for (const std::string &F : checkedWrites(K, Plan))
-    OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, " << Step << ", \""
-       << K.Function << "\", \"" << F << "\");\n";
-}
-
-void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
-  OS << "Self &create_particle(double density, double mass, double smoothing_length,\n"
-     << "                      const wash::ParticleVec &pos, const wash::ParticleVec &vel) {\n"
-     << "  static Self created{0};\n"
-     << "  const std::size_t index = P.size();\n"
-     << "  if (index >= std::size_t(std::numeric_limits<Index>::max()))\n"
-     << "    throw wash::detail::RunError(\"too many particles for this program's index type\");\n"
-     << "  created = Self{Index(index)};\n";
-  for (const Field *F : Plan.Stored) {
-    const std::string &Col = Plan.Member.at(F->Name);
-    OS << "  P." << Col << ".push_back(";
-    if (F->Name == "id")
-      OS << "index";
-    else if (F->Name == "pos" || F->Name == "vel")
-      OS << "Stored(" << F->Name << ")";
-    else if (F->Name == "density" || F->Name == "mass" || F->Name == "smoothing_length")
-      OS << "Real(" << F->Name << ")";
-    else
-      OS << (F->Kind == ForceKind::Vector ? "Stored()" : "Real()");
-    OS << ");\n";
-  }
-  OS << "  return created;\n}\n\n";
-}
-
-void emitFrame(std::ostream &OS, const CodePlan &Plan) {
-  OS << "wash::detail::Frame frame() {\n"
-     << "  wash::backend::FrameBuilder f(" << Plan.Dim << ", P.id);\n";
-  for (const Field *F : Plan.Output) {
-    if (!F->Live)
-      OS << "  f.zeros(\"" << F->Name << "\", " << (F->Kind == ForceKind::Vector ? Plan.Dim : 1)
-         << ");\n";
-    else
-      OS << "  f." << (F->Kind == ForceKind::Vector ? "vector" : "scalar") << "(\"" << F->Name
-         << "\", P." << Plan.Member.at(F->Name) << ");\n";
-  }
-  OS << "  return f.take();\n}\n";
-}
-
 void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned K,
                 const std::string &Callee) {
   const Kernel &Kn = M.Kernels[K];
   const std::string Loop = loopNamespace(Plan.Target) + "::forEachParticle";
-  OS << "    // " << Kn.Function << ": " << kernelKindName(Kn.Kind) << " kernel";
+  OS << "    " << kernelComment(M, K) << "\n";
   if (isForce(Kn)) {
-    const SearchGroup &G = M.Searches.at(Kn.SearchGroup);
-    bool First = G.Kernels.front() == K;
-    OS << (First ? ", new neighbour search" : ", reuses the neighbour search of '" +
-                                                   M.Kernels[G.Kernels.front()].Function + "'");
-  }
-  OS << "\n";
-  if (isForce(Kn)) {
-    const SearchGroup &G = M.Searches.at(Kn.SearchGroup);
-    if (G.Kernels.front() == K)
+    if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K)
       OS << "    sortByCell(run.radius());\n";
-    for (const std::string &F : Plan.Snapshotted) {
-      const std::string &Col = Plan.Member.at(F);
-      if (Kn.Hazards.count(F))
-        OS << "    " << Col << "_snapshot = P." << Col << "; // written here, read through neighbours\n"
-           << "    " << Col << "_neighbour = " << Col << "_snapshot.data();\n";
-      else
-        OS << "    " << Col << "_neighbour = P." << Col << ".data();\n";
-    }
-    OS << "    " << Loop << "(n, [](Index i) {\n"
-       << "      Self self{i};\n"
-       << "      " << Callee << "(self, NeighbourList(grid, P.pos, i));\n"
-       << "    });\n";
-  } else {
-    OS << "    " << Loop << "(n, [](Index i) {\n"
-       << "      Self self{i};\n"
-       << "      " << Callee << "(self);\n"
-       << "    });\n";
+    emitSnapshots(OS, Kn, Plan);
   }
-  emitChecks(OS, Kn, Plan, "step", "    ");
+  OS << "    " << Loop << "(n, [](Index i) {\n"
+     << "      Self self{i};\n"
+     << "      " << Callee << (isForce(Kn) ? "(self, NeighbourList(grid, P.pos, i));\n" : "(self);\n")
+     << "    });\n";
+  emitFiniteChecks(OS, Kn, Plan, "step", "", "    ");
 }
 
 } // namespace
@@ -130,8 +57,8 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
   OS << "// Fields with no storage (nothing reads or writes them): " << (Dead.empty() ? "none" : Dead)
      << ".\n#pragma once\n\n"
      << "#include <wash/backend/program.hpp>\n"
-     << "#include <" << (Plan.Target == Backend::OpenMP ? "wash/openmp" : "wash/serial")
-     << "/for_each.hpp>\n\n"
+     << "#include <wash/" << backendName(Plan.Target) << "/for_each.hpp>\n"
+     << (Plan.Target == Backend::MPI ? "#include <wash/mpi/halo.hpp>\n" : "") << "\n"
      << "#include <cstdint>\n#include <limits>\n\n"
      << "namespace wash {\n"
      << "inline constexpr int dimensions = " << Plan.Dim << ";\n"
@@ -193,8 +120,11 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << "  grid.sort(P.pos, P.id, radius, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
      << "}\n\n";
-  emitFrame(OS, Plan);
-  OS << "} // namespace\n\n";
+  OS << "wash::detail::Frame frame() {\n"
+     << "  wash::backend::FrameBuilder f(" << Plan.Dim << ", P.id);\n";
+  emitFrameColumns(OS, Plan);
+  OS << "  return f.take();\n}\n"
+     << "} // namespace\n\n";
   emitCreateParticle(OS, Plan);
 
   OS << "void start() {\n"
@@ -203,7 +133,7 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
       OS << "  " << Callees[K] << "(); // init kernel\n";
-      emitChecks(OS, M.Kernels[K], Plan, "0", "  ");
+      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "", "  ");
     }
   OS << "  run.begin(P.size(), frame);\n"
      << "  const Index n = Index(P.size());\n"

@@ -27,14 +27,18 @@ struct UsageError : RunError {
   using RunError::RunError;
 };
 
+/// With --output-every K > 0: step 0, every K-th step and the last step.
+/// With K = 0: the last step only.
+bool frameDue(const RunOptions &options, std::uint64_t step, std::uint64_t lastStep);
+
 class RunOutput {
 public:
   /// Creates the output directory and checks that it is writable (throws RunError).
   RunOutput(const RunOptions &options, std::string baseName);
 
-  /// With --output-every K > 0: step 0, every K-th step and the last step.
-  /// With K = 0: the last step only.
-  bool frameDue(std::uint64_t step, std::uint64_t lastStep) const;
+  bool frameDue(std::uint64_t step, std::uint64_t lastStep) const {
+    return detail::frameDue(options_, step, lastStep);
+  }
   void writeFrame(std::uint64_t step, const Frame &frame);
   /// Writes the .pvd series (VTK) and the --dump file, if asked for.
   void finish(const Frame &finalFrame);

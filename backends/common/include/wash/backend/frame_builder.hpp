@@ -13,19 +13,24 @@ namespace wash::backend {
 /// generated code adds them (the output order of docs/semantics.md).
 class FrameBuilder {
 public:
-  FrameBuilder(int dimensions, const Column<std::uint64_t> &ids) {
+  /// A frame of every particle, or of the given rows only (an MPI rank's own).
+  FrameBuilder(int dimensions, const Column<std::uint64_t> &ids,
+               const std::vector<Index> *rows = nullptr)
+      : rows_(rows) {
     frame_.dimensions = dimensions;
-    frame_.ids = ids;
+    forEachRow(ids.size(), [&](std::size_t p) { frame_.ids.push_back(ids[p]); });
   }
   template <typename T> void scalar(const char *name, const Column<T> &column) {
-    frame_.columns.push_back({name, 1, std::vector<double>(column.begin(), column.end())});
+    detail::Column out{name, 1, {}};
+    forEachRow(column.size(), [&](std::size_t p) { out.values.push_back(double(column[p])); });
+    frame_.columns.push_back(std::move(out));
   }
   template <typename T, int D> void vector(const char *name, const Column<Vec<T, D>> &column) {
     detail::Column out{name, D, {}};
-    out.values.reserve(column.size() * D);
-    for (const Vec<T, D> &v : column)
+    forEachRow(column.size(), [&](std::size_t p) {
       for (int a = 0; a < D; ++a)
-        out.values.push_back(double(v.at(a)));
+        out.values.push_back(double(column[p].at(a)));
+    });
     frame_.columns.push_back(std::move(out));
   }
   /// A field the program never writes (it has no storage): zeros.
@@ -35,6 +40,16 @@ public:
   detail::Frame take() { return std::move(frame_); }
 
 private:
+  template <typename F> void forEachRow(std::size_t size, F f) const {
+    if (!rows_)
+      for (std::size_t p = 0; p < size; ++p)
+        f(p);
+    else
+      for (Index p : *rows_)
+        f(p);
+  }
+
+  const std::vector<Index> *rows_;
   detail::Frame frame_;
 };
 

@@ -36,8 +36,10 @@ detail::RunOptions &programOptions();
 
 class Run {
 public:
-  /// Checks the settings against what the program was translated for.
-  Run(const char *backend, int dimensions, bool translatedForFloat);
+  /// Checks the settings against what the program was translated for. Only a
+  /// run that `writes` (rank 0 of an MPI job) prints and writes files; every
+  /// rank still builds the frames, which may be collective.
+  Run(const char *backend, int dimensions, bool translatedForFloat, bool writes = true);
   ~Run();
 
   std::uint64_t steps() const { return steps_; }
@@ -46,16 +48,19 @@ public:
   /// After the init kernels: prints the header, writes frame 0 if due.
   template <typename FrameFn> void begin(std::size_t particles, FrameFn frame) {
     started(particles);
-    if (output_->frameDue(0, steps_))
-      output_->writeFrame(0, frame());
+    if (frameDue(0))
+      write(0, frame());
   }
   /// After every kernel of a step.
   template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
-    if (output_->frameDue(step, steps_))
-      output_->writeFrame(step, frame());
-    progress_->update(step);
+    if (frameDue(step))
+      write(step, frame());
+    if (progress_)
+      progress_->update(step);
   }
   void finish(const detail::Frame &finalFrame);
+  /// Prints one more line of the end-of-run summary (writing run, not --quiet).
+  void report(const std::string &line) const;
 
   /// Stops the run if a value the kernel wrote is not finite.
   template <typename T>
@@ -65,9 +70,20 @@ public:
       if (!finite(column[p]))
         fail(step, kernel, field, ids[p], column[p]);
   }
+  /// The same over the given positions only (an MPI rank's own particles).
+  template <typename T>
+  void checkFinite(const Column<T> &column, const Column<std::uint64_t> &ids,
+                   const std::vector<Index> &rows, std::uint64_t step, const char *kernel,
+                   const char *field) const {
+    for (Index p : rows)
+      if (!finite(column[p]))
+        fail(step, kernel, field, ids[p], column[p]);
+  }
 
 private:
   void started(std::size_t particles);
+  bool frameDue(std::uint64_t step) const;
+  void write(std::uint64_t step, const detail::Frame &frame);
   static bool finite(double v) { return std::isfinite(v); }
   template <typename T, int D> static bool finite(const Vec<T, D> &v) {
     for (int a = 0; a < D; ++a)
@@ -92,7 +108,7 @@ private:
 
   std::string backend_;
   int dimensions_;
-  bool useFloat_;
+  bool useFloat_, writes_;
   std::uint64_t steps_ = 0;
   double radius_ = 0.0;
   std::unique_ptr<detail::RunOutput> output_;

@@ -1,0 +1,37 @@
+//===- wash/mpi/comm.hpp - the few MPI operations the MPI backend uses -*- C++ -*-===//
+#pragma once
+
+#include <wash/detail/frame.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace wash::mpi {
+
+int rank();
+int ranks();
+
+/// Bytes sent to other ranks so far, by purpose (for the end-of-run report).
+struct Traffic {
+  std::uint64_t halo = 0, migration = 0;
+};
+Traffic &traffic();
+
+/// Sends send[r] to rank r and returns what each rank sent here, in rank
+/// order; recvBytes[r] must be known (alltoallExchangeCounts gives it).
+std::vector<char> alltoallv(const std::vector<std::vector<char>> &send,
+                            const std::vector<std::size_t> &recvBytes, std::uint64_t &counter);
+/// counts[r] -> what rank r sent to this one.
+std::vector<std::size_t> alltoallCounts(const std::vector<std::size_t> &counts);
+
+std::uint64_t allreduceSum(std::uint64_t v);
+std::uint64_t allreduceMax(std::uint64_t v);
+std::uint64_t allreduceMin(std::uint64_t v);
+/// Every rank's `local`, concatenated in rank order, on every rank.
+std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &local);
+std::vector<double> allgatherv(const std::vector<double> &local);
+
+/// The frames of all ranks, concatenated, on rank 0 (others get an empty frame).
+detail::Frame gatherFrame(const detail::Frame &local);
+
+} // namespace wash::mpi

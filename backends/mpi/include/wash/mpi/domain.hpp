@@ -1,0 +1,121 @@
+//===- wash/mpi/domain.hpp - which rank owns which particles ------*- C++ -*-===//
+//
+// Space is cut along a Z-order (Morton) curve over the cells of the canonical
+// grid (cell size = influence radius): each rank owns a contiguous range of
+// cell keys, so a cell and all its particles belong to one rank. The ranges
+// are chosen to balance particle counts and recomputed when the imbalance
+// grows past a threshold.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/mpi/comm.hpp>
+#include <wash/vec.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+namespace wash::mpi {
+
+template <int D> class Domain {
+public:
+  using Cell = std::array<std::int64_t, D>;
+  static constexpr int bits = 21;
+  static constexpr std::int64_t offset = std::int64_t(1) << (bits - 1);
+
+  void setCellSize(double cellSize) { cellSize_ = cellSize; }
+  double cellSize() const { return cellSize_; }
+
+  Cell cellOf(const Vec<double, D> &p) const {
+    Cell c;
+    for (int a = 0; a < D; ++a)
+      c[a] = static_cast<std::int64_t>(std::floor(p.at(a) / cellSize_));
+    return c;
+  }
+
+  /// Z-order key of a cell: the bits of the (offset) coordinates interleaved,
+  /// x in the lowest bit.
+  std::uint64_t keyOf(const Cell &c) const {
+    std::uint64_t key = 0;
+    for (int a = 0; a < D; ++a) {
+      std::int64_t u = c[a] + offset;
+      if (u < 0 || u >= (std::int64_t(1) << bits))
+        throw std::out_of_range("wash mpi: a particle is more than 2^20 cells from the origin");
+      key |= spread(std::uint64_t(u)) << a;
+    }
+    return key;
+  }
+
+  int ownerOf(std::uint64_t key) const {
+    return int(std::upper_bound(splitters_.begin(), splitters_.end(), key) - splitters_.begin());
+  }
+
+  /// Splitters from every key, known on every rank (the initial state).
+  void balanceExactly(std::vector<std::uint64_t> keys) {
+    std::sort(keys.begin(), keys.end());
+    splitters_.clear();
+    for (int r = 1; r < ranks(); ++r)
+      splitters_.push_back(keys.empty() ? 0 : keys[keys.size() * r / ranks()]);
+  }
+
+  /// Splitters from a weighted sample of every rank's keys (collective).
+  void balance(std::vector<std::uint64_t> localKeys) {
+    std::sort(localKeys.begin(), localKeys.end());
+    const std::size_t n = localKeys.size(), samples = std::min<std::size_t>(n, 1024);
+    std::vector<std::uint64_t> sample;
+    std::vector<double> weight;
+    for (std::size_t k = 0; k < samples; ++k) {
+      sample.push_back(localKeys[k * n / samples]);
+      weight.push_back(double(n) / double(samples));
+    }
+    std::vector<std::uint64_t> keys = allgatherv(sample);
+    std::vector<double> weights = allgatherv(weight);
+    std::vector<std::size_t> order(keys.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      order[k] = k;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return keys[a] != keys[b] ? keys[a] < keys[b] : a < b;
+    });
+    double total = 0;
+    for (double w : weights)
+      total += w;
+    splitters_.assign(ranks() - 1, ~std::uint64_t(0));
+    double before = 0;
+    int next = 1;
+    for (std::size_t k : order) {
+      while (next < ranks() && before >= total * next / ranks())
+        splitters_[next++ - 1] = keys[k];
+      before += weights[k];
+    }
+  }
+
+private:
+  /// The 21 low bits of v, moved to every D-th bit.
+  static std::uint64_t spread(std::uint64_t v) {
+    if constexpr (D == 2) {
+      v &= 0x1fffff;
+      v = (v | (v << 16)) & 0x0000ffff0000ffffull;
+      v = (v | (v << 8)) & 0x00ff00ff00ff00ffull;
+      v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0full;
+      v = (v | (v << 2)) & 0x3333333333333333ull;
+      v = (v | (v << 1)) & 0x5555555555555555ull;
+    } else {
+      v &= 0x1fffff;
+      v = (v | (v << 32)) & 0x001f00000000ffffull;
+      v = (v | (v << 16)) & 0x001f0000ff0000ffull;
+      v = (v | (v << 8)) & 0x100f00f00f00f00full;
+      v = (v | (v << 4)) & 0x10c30c30c30c30c3ull;
+      v = (v | (v << 2)) & 0x1249249249249249ull;
+    }
+    return v;
+  }
+
+  double cellSize_ = 1.0;
+  std::vector<std::uint64_t> splitters_; ///< rank r owns [splitters[r-1], splitters[r])
+};
+
+} // namespace wash::mpi

@@ -1,0 +1,276 @@
+//===- wash/mpi/halo.hpp - migration, halo build and halo exchange -*- C++ -*-===//
+//
+// A rank stores its own particles and, while a neighbour search lasts, halo
+// copies of other ranks' particles that lie within the influence radius of one
+// of its cells. Owned and halo particles share the columns (the cell sort mixes
+// them, cells being whole); HaloPlan remembers which positions are owned, which
+// to send to whom, and where each received copy lives.
+//
+// The column-generic functions take a `Particles` with forEachColumn(f), and a
+// `Fields` callable that calls its argument on each column to transfer.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/columns.hpp>
+#include <wash/mpi/comm.hpp>
+#include <wash/mpi/domain.hpp>
+#include <wash/detail/run_output.hpp>
+
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace wash::mpi {
+
+using backend::Index;
+
+struct HaloPlan {
+  std::vector<Index> owned;                   ///< positions of owned particles, ascending
+  std::vector<std::vector<Index>> send, recv; ///< by rank: positions sent / received there
+  std::size_t ghosts = 0;
+
+  /// No halo: positions 0..n-1 are all owned.
+  void ownAll(std::size_t n) {
+    owned.resize(n);
+    std::iota(owned.begin(), owned.end(), Index(0));
+    ghosts = 0;
+    send.assign(ranks(), {});
+    recv.assign(ranks(), {});
+  }
+
+  /// After columns were reordered (new[k] = old[order[k]]): follow the positions.
+  void permuted(const std::vector<Index> &order) {
+    std::vector<Index> where(order.size());
+    for (Index k = 0; k < order.size(); ++k)
+      where[order[k]] = k;
+    for (auto *lists : {&send, &recv})
+      for (auto &list : *lists)
+        for (Index &p : list)
+          p = where[p];
+    std::vector<char> isOwned(order.size(), 0);
+    for (Index p : owned)
+      isOwned[where[p]] = 1;
+    owned.clear();
+    for (Index k = 0; k < order.size(); ++k)
+      if (isOwned[k])
+        owned.push_back(k);
+  }
+};
+
+namespace detail {
+
+template <typename T> void pack(const backend::Column<T> &c, const std::vector<Index> &at,
+                                std::vector<char> &out) {
+  std::size_t start = out.size();
+  out.resize(start + at.size() * sizeof(T));
+  for (std::size_t k = 0; k < at.size(); ++k)
+    std::memcpy(out.data() + start + k * sizeof(T), &c[at[k]], sizeof(T));
+}
+
+template <typename T>
+const char *unpack(backend::Column<T> &c, const std::vector<Index> &at, const char *in) {
+  for (std::size_t k = 0; k < at.size(); ++k)
+    std::memcpy(&c[at[k]], in + k * sizeof(T), sizeof(T));
+  return in + at.size() * sizeof(T);
+}
+
+/// Sends the columns `fields` visits, at send[r], to each rank r, and writes
+/// what arrives from rank r at recv[r]. One message per rank pair.
+template <typename Fields>
+void transfer(const std::vector<std::vector<Index>> &send,
+              const std::vector<std::vector<Index>> &recv, Fields fields, std::uint64_t &counter) {
+  const int n = ranks();
+  std::size_t rowBytes = 0;
+  fields([&](auto &column) { rowBytes += sizeof(column[0]); });
+  std::vector<std::vector<char>> out(n);
+  std::vector<std::size_t> inBytes(n);
+  for (int r = 0; r < n; ++r) {
+    fields([&](auto &column) { pack(column, send[r], out[r]); });
+    inBytes[r] = recv[r].size() * rowBytes;
+  }
+  std::vector<char> in = alltoallv(out, inBytes, counter);
+  const char *cursor = in.data();
+  for (int r = 0; r < n; ++r)
+    fields([&](auto &column) { cursor = unpack(column, recv[r], cursor); });
+}
+
+} // namespace detail
+
+/// Keeps only the owned particles (in their current order).
+template <typename Particles> void dropGhosts(Particles &P, HaloPlan &plan) {
+  if (plan.ghosts > 0)
+    P.forEachColumn([&](auto &column) { backend::permute(column, plan.owned); });
+  plan.ownAll(P.size());
+}
+
+/// Moves every particle to the rank that owns its cell. Call with no ghosts.
+template <int D, typename Particles>
+void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
+  const int n = ranks(), me = rank();
+  std::vector<std::vector<Index>> send(n);
+  std::vector<Index> keep;
+  for (Index i = 0; i < P.size(); ++i) {
+    int owner = domain.ownerOf(domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i]))));
+    (owner == me ? keep : send[owner]).push_back(i);
+  }
+  std::vector<std::size_t> counts(n);
+  for (int r = 0; r < n; ++r)
+    counts[r] = send[r].size();
+  std::vector<std::size_t> incoming = alltoallCounts(counts);
+  std::size_t arriving = 0;
+  for (int r = 0; r < n; ++r)
+    arriving += r == me ? 0 : incoming[r];
+  // Received particles go after the kept ones.
+  std::vector<std::vector<Index>> recv(n);
+  Index next = Index(keep.size());
+  for (int r = 0; r < n; ++r)
+    for (std::size_t k = 0; r != me && k < incoming[r]; ++k)
+      recv[r].push_back(next++);
+  send[me].clear();
+  std::size_t total = keep.size() + arriving;
+  // Pack before compacting, then compact, grow and unpack.
+  std::vector<std::vector<char>> out(n);
+  std::size_t rowBytes = 0;
+  P.forEachColumn([&](auto &column) { rowBytes += sizeof(column[0]); });
+  for (int r = 0; r < n; ++r)
+    P.forEachColumn([&](auto &column) { detail::pack(column, send[r], out[r]); });
+  std::vector<std::size_t> inBytes(n);
+  for (int r = 0; r < n; ++r)
+    inBytes[r] = recv[r].size() * rowBytes;
+  std::vector<char> in = alltoallv(out, inBytes, traffic().migration);
+  P.forEachColumn([&](auto &column) {
+    backend::permute(column, keep);
+    column.resize(total);
+  });
+  const char *cursor = in.data();
+  for (int r = 0; r < n; ++r)
+    P.forEachColumn([&](auto &column) { cursor = detail::unpack(column, recv[r], cursor); });
+  plan.ownAll(total);
+}
+
+/// After the init kernels, which ran on every rank: checks that every rank
+/// created the same particles, then keeps this rank's share (balanced exactly).
+template <int D, typename Particles>
+void keepInitialShare(Particles &P, Domain<D> &domain, HaloPlan &plan) {
+  std::uint64_t hash = 1469598103934665603ull ^ P.size();
+  for (Index i = 0; i < P.size(); ++i) {
+    unsigned char bytes[sizeof(P.pos[i])];
+    std::memcpy(bytes, &P.pos[i], sizeof bytes);
+    for (unsigned char b : bytes)
+      hash = (hash ^ b) * 1099511628211ull;
+  }
+  if (allreduceMin(hash) != allreduceMax(hash))
+    throw ::wash::detail::RunError("the init kernels created different particles on different "
+                                "ranks; with the MPI backend they run on every rank and must be "
+                                "deterministic");
+  std::vector<std::uint64_t> keys(P.size());
+  for (Index i = 0; i < P.size(); ++i)
+    keys[i] = domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i])));
+  domain.balanceExactly(keys);
+  std::vector<Index> mine;
+  for (Index i = 0; i < P.size(); ++i)
+    if (domain.ownerOf(keys[i]) == rank())
+      mine.push_back(i);
+  P.forEachColumn([&](auto &column) { backend::permute(column, mine); });
+  plan.ownAll(P.size());
+}
+
+/// Before a new neighbour search: drops the halo, rebalances the domain when
+/// the largest rank holds more than `tolerance` times the mean, and migrates.
+template <int D, typename Particles>
+void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolerance = 1.1) {
+  dropGhosts(P, plan);
+  std::uint64_t largest = allreduceMax(P.size()), total = allreduceSum(P.size());
+  if (double(largest) > tolerance * double(total) / ranks()) {
+    std::vector<std::uint64_t> keys(P.size());
+    for (Index i = 0; i < P.size(); ++i)
+      keys[i] = domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i])));
+    domain.balance(std::move(keys));
+  }
+  migrate(P, domain, plan);
+}
+
+/// Builds the halo for a new neighbour search: every owned particle within the
+/// radius of another rank's cell is copied there, with the columns `fields`
+/// visits (id and pos must be among them). Call with no ghosts.
+template <int D, typename Particles, typename Fields>
+void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &plan,
+               Fields fields) {
+  const int n = ranks(), me = rank();
+  const std::size_t owned = P.size();
+  using Cell = typename Domain<D>::Cell;
+  // Owners of the cells around this rank's particles, computed once per cell.
+  Cell lo, hi, c;
+  lo.fill(std::numeric_limits<std::int64_t>::max());
+  hi.fill(std::numeric_limits<std::int64_t>::min());
+  std::vector<Cell> from(owned), to(owned);
+  for (Index i = 0; i < owned; ++i) {
+    Vec<double, D> p(P.pos[i]);
+    for (int a = 0; a < D; ++a) {
+      from[i][a] = static_cast<std::int64_t>(std::floor((p.at(a) - radius) / domain.cellSize()));
+      to[i][a] = static_cast<std::int64_t>(std::floor((p.at(a) + radius) / domain.cellSize()));
+      lo[a] = std::min(lo[a], from[i][a]);
+      hi[a] = std::max(hi[a], to[i][a]);
+    }
+  }
+  std::size_t cells = 1;
+  for (int a = 0; a < D && owned; ++a)
+    cells *= std::size_t(hi[a] - lo[a] + 1);
+  const bool dense = owned > 0 && cells <= 8 * owned + 64;
+  std::vector<int> ownerCache(dense ? cells : 0, -1);
+  auto ownerOf = [&](const Cell &cell) {
+    if (!dense)
+      return domain.ownerOf(domain.keyOf(cell));
+    std::size_t index = 0;
+    for (int a = D - 1; a >= 0; --a)
+      index = index * std::size_t(hi[a] - lo[a] + 1) + std::size_t(cell[a] - lo[a]);
+    int &owner = ownerCache[index];
+    if (owner < 0)
+      owner = domain.ownerOf(domain.keyOf(cell));
+    return owner;
+  };
+  std::vector<std::vector<Index>> send(n);
+  std::vector<int> seen;
+  for (Index i = 0; i < owned; ++i) {
+    seen.assign(1, me);
+    c = from[i];
+    while (true) {
+      int owner = ownerOf(c);
+      if (std::find(seen.begin(), seen.end(), owner) == seen.end()) {
+        seen.push_back(owner);
+        send[owner].push_back(i);
+      }
+      int a = 0;
+      while (a < D && c[a] == to[i][a])
+        c[a] = from[i][a], ++a;
+      if (a == D)
+        break;
+      ++c[a];
+    }
+  }
+  std::vector<std::size_t> counts(n);
+  for (int r = 0; r < n; ++r)
+    counts[r] = send[r].size();
+  std::vector<std::size_t> incoming = alltoallCounts(counts);
+  std::vector<std::vector<Index>> recv(n);
+  Index next = Index(owned);
+  for (int r = 0; r < n; ++r)
+    for (std::size_t k = 0; k < incoming[r]; ++k)
+      recv[r].push_back(next++);
+  P.forEachColumn([&](auto &column) { column.resize(next); });
+  detail::transfer(send, recv, fields, traffic().halo);
+  plan.send = std::move(send);
+  plan.recv = std::move(recv);
+  plan.ghosts = next - owned;
+  plan.owned.resize(owned);
+  std::iota(plan.owned.begin(), plan.owned.end(), Index(0));
+}
+
+/// Refreshes the halo copies of the columns `fields` visits.
+template <typename Fields> void exchange(const HaloPlan &plan, Fields fields) {
+  detail::transfer(plan.send, plan.recv, fields, traffic().halo);
+}
+
+} // namespace wash::mpi

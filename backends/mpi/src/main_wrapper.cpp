@@ -1,0 +1,32 @@
+//===- main_wrapper.cpp - the entry point of MPI programs ---------------===//
+//
+// MPI is initialised before the simulation's main and finalised after it. A
+// failure on any rank ends the whole job (MPI_Abort) instead of leaving the
+// other ranks waiting in a collective. Ranks other than 0 write no standard
+// output: the simulation's own prints and the run summary appear once.
+//
+//===----------------------------------------------------------------------===//
+#include <wash/backend/run.hpp>
+#include <wash/detail/entry.hpp>
+#include <wash/mpi/comm.hpp>
+
+#include <mpi.h>
+
+#include <cstdio>
+
+extern "C" int __real_main(int argc, char **argv);
+extern "C" int __wrap_main(int argc, char **argv) {
+  int provided = 0;
+  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  if (wash::mpi::rank() != 0 && !std::freopen("/dev/null", "w", stdout))
+    std::fprintf(stderr, "wash mpi: rank %d could not silence its standard output\n",
+                 wash::mpi::rank());
+  int status = wash::detail::runProgram(
+      argc, argv, [](const wash::detail::RunOptions &o) { wash::backend::programOptions() = o; },
+      &__real_main);
+  std::fflush(stdout);
+  if (status != 0 && wash::mpi::ranks() > 1)
+    MPI_Abort(MPI_COMM_WORLD, status);
+  MPI_Finalize();
+  return status;
+}

@@ -1,0 +1,31 @@
+//===- DriverParts.h - pieces every generated driver shares -----*- C++ -*-===//
+#pragma once
+
+#include "wash/translator/Emit/CodePlan.h"
+#include "wash/translator/Model.h"
+
+#include <ostream>
+#include <string>
+
+namespace wash::tr {
+
+/// `create_particle`: appends one particle to every column.
+void emitCreateParticle(std::ostream &OS, const CodePlan &Plan);
+
+/// The FrameBuilder calls of `frame()`, in output order (`f` is the builder).
+void emitFrameColumns(std::ostream &OS, const CodePlan &Plan);
+
+/// `run.checkFinite(...)` for every stored field K writes; Rows is "" for all
+/// particles or the expression of the positions to check (", halo.owned").
+void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
+                      const std::string &Step, const std::string &Rows,
+                      const std::string &Indent);
+
+/// `// Name: force kernel, new neighbour search` and the like.
+std::string kernelComment(const Model &M, unsigned K);
+
+/// Before a force kernel: point neighbour reads of snapshotted fields at the
+/// snapshot (copied now) if the kernel writes them, else at the live column.
+void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan);
+
+} // namespace wash::tr

@@ -1,0 +1,72 @@
+//===- DriverParts.cpp - pieces every generated driver shares -------------===//
+#include "wash/translator/Emit/DriverParts.h"
+
+namespace wash::tr {
+
+void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
+  OS << "Self &create_particle(double density, double mass, double smoothing_length,\n"
+     << "                      const wash::ParticleVec &pos, const wash::ParticleVec &vel) {\n"
+     << "  static Self created{0};\n"
+     << "  const std::size_t index = P.size();\n"
+     << "  if (index >= std::size_t(std::numeric_limits<Index>::max()))\n"
+     << "    throw wash::detail::RunError(\"too many particles for this program's index type\");\n"
+     << "  created = Self{Index(index)};\n";
+  for (const Field *F : Plan.Stored) {
+    OS << "  P." << Plan.Member.at(F->Name) << ".push_back(";
+    if (F->Name == "id")
+      OS << "index";
+    else if (F->Name == "pos" || F->Name == "vel")
+      OS << "Stored(" << F->Name << ")";
+    else if (F->Name == "density" || F->Name == "mass" || F->Name == "smoothing_length")
+      OS << "Real(" << F->Name << ")";
+    else
+      OS << (F->Kind == ForceKind::Vector ? "Stored()" : "Real()");
+    OS << ");\n";
+  }
+  OS << "  return created;\n}\n\n";
+}
+
+void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
+  for (const Field *F : Plan.Output) {
+    if (!F->Live)
+      OS << "  f.zeros(\"" << F->Name << "\", " << (F->Kind == ForceKind::Vector ? Plan.Dim : 1)
+         << ");\n";
+    else
+      OS << "  f." << (F->Kind == ForceKind::Vector ? "vector" : "scalar") << "(\"" << F->Name
+         << "\", P." << Plan.Member.at(F->Name) << ");\n";
+  }
+}
+
+void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
+                      const std::string &Step, const std::string &Rows,
+                      const std::string &Indent) {
+  for (const std::string &F : K.OwnWrites)
+    if (Plan.Member.count(F) && F != "id") // A dead write needs no check.
+      OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id" << Rows << ", " << Step
+         << ", \"" << K.Function << "\", \"" << F << "\");\n";
+}
+
+std::string kernelComment(const Model &M, unsigned K) {
+  const Kernel &Kn = M.Kernels[K];
+  std::string C = "// " + Kn.Function + ": " + kernelKindName(Kn.Kind) + " kernel";
+  if (Kn.Kind == KernelKind::Force) {
+    const SearchGroup &G = M.Searches.at(Kn.SearchGroup);
+    C += G.Kernels.front() == K
+             ? ", new neighbour search"
+             : ", reuses the neighbour search of '" + M.Kernels[G.Kernels.front()].Function + "'";
+  }
+  return C;
+}
+
+void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan) {
+  for (const std::string &F : Plan.Snapshotted) {
+    const std::string &Col = Plan.Member.at(F);
+    if (K.Hazards.count(F))
+      OS << "    " << Col << "_snapshot = P." << Col << "; // written here, read through neighbours\n"
+         << "    " << Col << "_neighbour = " << Col << "_snapshot.data();\n";
+    else
+      OS << "    " << Col << "_neighbour = P." << Col << ".data();\n";
+  }
+}
+
+} // namespace wash::tr
