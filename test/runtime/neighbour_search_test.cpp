@@ -129,3 +129,71 @@ TEST(NeighbourSearch, OrderDoesNotDependOnStorageOrder) {
       EXPECT_EQ(ids[fa[n]], ids2[fb[n]]);
   }
 }
+
+TEST(NeighbourSearch, PeriodicBoxMatchesMinimumImageBruteForce) {
+  // Periodic in x and y (3D, z closed): every pair within the radius at its
+  // minimum-image distance, seen at that image, ordered by (cell of image, id).
+  wash::detail::Box box;
+  box.defined = true;
+  box.lo = {-1.0, 0.0, 0.0};
+  box.hi = {1.0, 1.5, 1.0};
+  box.periodic = {true, true, false};
+  const double r = 0.3;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> ux(-1.0, 1.0), uy(0.0, 1.5), uz(0.0, 1.0);
+  std::vector<wash::Vec3D> pos;
+  std::vector<std::uint64_t> ids;
+  for (int k = 0; k < 400; ++k) {
+    pos.push_back({ux(rng), uy(rng), uz(rng)});
+    ids.push_back(399 - k);
+  }
+  CellList<3> cells;
+  cells.build(pos, ids, r);
+  std::vector<std::size_t> found;
+  std::vector<wash::Vec3D> images;
+  for (std::size_t i = 0; i < pos.size(); ++i) {
+    cells.periodicNeighbours(i, box, found, images, [](double v) { return v; });
+    std::vector<std::tuple<CellList<3>::Key, std::uint64_t, wash::Vec3D>> expected;
+    for (std::size_t j = 0; j < pos.size(); ++j) {
+      if (j == i)
+        continue;
+      wash::Vec3D image = pos[j];
+      for (int a = 0; a < 2; ++a) { // minimum image, computed independently
+        double d = image.at(a) - pos[i].at(a), L = box.hi[a] - box.lo[a];
+        if (d > L / 2)
+          *image[a] -= L;
+        else if (d < -L / 2)
+          *image[a] += L;
+      }
+      if (withinRadius<3>(pos[i], image, r))
+        expected.emplace_back(cells.keyOf(image), ids[j], image);
+    }
+    std::sort(expected.begin(), expected.end(), [](const auto &x, const auto &y) {
+      return std::tie(std::get<0>(x), std::get<1>(x)) < std::tie(std::get<0>(y), std::get<1>(y));
+    });
+    ASSERT_EQ(found.size(), expected.size()) << "particle " << i;
+    for (std::size_t n = 0; n < found.size(); ++n) {
+      EXPECT_EQ(ids[found[n]], std::get<1>(expected[n]));
+      EXPECT_EQ(images[n], std::get<2>(expected[n]));
+    }
+  }
+}
+
+TEST(Box, WrapsIntoTheBoxAndLeavesInsideCoordinatesAlone) {
+  wash::detail::Box box;
+  box.lo = {0.0, -1.0, 0.0};
+  box.hi = {1.0, 1.0, 1.0};
+  EXPECT_EQ(box.wrap(0.25, 0), 0.25);
+  EXPECT_EQ(box.wrap(1.25, 0), 0.25);
+  EXPECT_EQ(box.wrap(-0.5, 0), 0.5);
+  EXPECT_EQ(box.wrap(-1.0, 1), -1.0);
+  EXPECT_EQ(box.wrap(1.0, 1), -1.0);
+  EXPECT_EQ(box.image(0.9, 0.1, 0), -1);
+  EXPECT_EQ(box.image(0.1, 0.9, 0), 1);
+  EXPECT_EQ(box.image(0.4, 0.1, 0), 0);
+  EXPECT_EQ(wash::detail::checkBox(box, 3, 0.3), ""); // not defined: nothing to check
+  box.defined = true;
+  box.periodic = {true, false, false};
+  EXPECT_EQ(wash::detail::checkBox(box, 3, 0.3), "");
+  EXPECT_NE(wash::detail::checkBox(box, 3, 0.5), ""); // L = 1 is not > 2r
+}

@@ -157,3 +157,36 @@ TEST_F(ReferenceTest, BadSettingsAreErrors) {
   add_force("f", 1);
   EXPECT_THROW(add_force("f", 1), detail::UsageError);
 }
+
+TEST_F(ReferenceTest, PeriodicAxesWrapPositionsAndSeeNeighboursAcrossTheFace) {
+  static std::vector<double> seenX;
+  seenX.clear();
+  std::vector<double> lo(dimensions, 0.0), hi(dimensions, 2.0);
+  std::vector<bool> periodic(dimensions, false);
+  periodic[0] = true;
+  set_bounding_box(lo, hi, periodic);
+  add_init_kernel([] {
+    create_particle(1.0, 1.0, 0.5, along(0.1), {});
+    create_particle(1.0, 1.0, 0.5, along(1.95), {});
+    create_particle(1.0, 1.0, 0.5, along(2.3), {}); // outside: wrapped to 0.3 after init
+  });
+  add_force_kernel([](Particle &p, const std::vector<Particle> &neighbours) {
+    if (p.get_id() == 0)
+      for (const Particle &n : neighbours)
+        seenX.push_back(n.get_pos().at(0));
+  });
+  start();
+  EXPECT_NEAR(state().particles.pos[2].at(0), 0.3, 1e-15);
+  // Particle 0 at 0.1 sees particle 1 through the face at its image, 1.95 - 2.
+  ASSERT_EQ(seenX.size(), 2u);
+  EXPECT_EQ(seenX[0], 1.95 - 2.0);
+  EXPECT_NEAR(seenX[1], 0.3, 1e-15);
+}
+
+TEST_F(ReferenceTest, APeriodicBoxMustBeLongerThanTwiceTheRadius) {
+  std::vector<double> lo(dimensions, 0.0), hi(dimensions, 1.0);
+  set_bounding_box(lo, hi, std::vector<bool>(dimensions, true)); // radius 0.6: 1.0 < 1.2
+  add_init_kernel(&threeInALine);
+  EXPECT_THROW(start(), detail::RunError);
+  EXPECT_THROW(set_bounding_box({0.0}, {1.0}, {true}), detail::UsageError); // wrong length
+}

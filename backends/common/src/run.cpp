@@ -30,6 +30,8 @@ Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writ
     throw detail::RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
   steps_ = o.steps ? *o.steps : *s.maxIterations;
   radius_ = *s.influenceRadius;
+  if (std::string bad = detail::checkBox(s.box, dimensions, radius_); !bad.empty())
+    throw detail::RunError(bad);
   if (writes_)
     output_ = std::make_unique<detail::RunOutput>(
         o, s.outputFileName.empty() ? s.simulationName : s.outputFileName);

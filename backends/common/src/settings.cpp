@@ -23,6 +23,13 @@ void set_influence_radius(double radius, std::source_location loc) {
   backend::settings().influenceRadius = radius;
 }
 
+void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
+                      const std::vector<bool> &periodic, std::source_location loc) {
+  if (!detail::setBox(backend::settings().box, backend::settings().dimensions, lo, hi, periodic))
+    usageError(loc, "set_bounding_box needs " + std::to_string(backend::settings().dimensions) +
+                        " values for lo, hi and periodic, with hi > lo on every axis");
+}
+
 void set_simulation_name(const std::string &name) { backend::settings().simulationName = name; }
 void set_output_file_name(const std::string &name) { backend::settings().outputFileName = name; }
 void set_max_iterations(std::uint64_t iterations) {

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <source_location>
 #include <string>
+#include <vector>
 
 namespace wash {
 
@@ -23,5 +24,15 @@ void set_simulation_name(const std::string &name);
 void set_output_file_name(const std::string &name);
 /// Number of iterations start() runs (the --steps option overrides it).
 void set_max_iterations(std::uint64_t iterations);
+
+/// The simulation box [lo, hi) and, per axis, whether it is periodic. On a
+/// periodic axis positions wrap into [lo, hi) and neighbours are found across
+/// the faces (a neighbour's get_pos() is then its nearest image); the box must
+/// be longer than twice the influence radius there. On other axes the bounds are
+/// not enforced: kernels keep particles in (walls are physics).
+/// (lo and hi are given as x, y[, z] lists; see docs/semantics.md.)
+void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
+                      const std::vector<bool> &periodic,
+                      std::source_location loc = std::source_location::current());
 
 } // namespace wash

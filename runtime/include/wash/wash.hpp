@@ -67,11 +67,15 @@ public:
   void set_force_vector(const std::string &name, const ParticleVec &value,
                         Location loc = Location::current());
 
-  Particle(detail::ParticleStore *store, std::size_t index) : store_(store), index_(index) {}
+  /// A handle on particle `index` of `store`; a neighbour across a periodic
+  /// face also carries the image's position.
+  Particle(detail::ParticleStore *store, std::size_t index, const ParticleVec *image = nullptr)
+      : store_(store), index_(index), image_(image) {}
 
 private:
   detail::ParticleStore *store_;
   std::size_t index_;
+  const ParticleVec *image_;
 };
 
 using InitKernel = void (*)();

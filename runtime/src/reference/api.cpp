@@ -52,6 +52,14 @@ void set_influence_radius(double radius, std::source_location loc) {
   state().influenceRadius = radius;
 }
 
+void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
+                      const std::vector<bool> &periodic, std::source_location loc) {
+  auto &box = state().box;
+  if (!detail::setBox(box, dimensions, lo, hi, periodic))
+    usageError(loc, "set_bounding_box needs " + std::to_string(dimensions) +
+                        " values for lo, hi and periodic, with hi > lo on every axis");
+}
+
 void set_simulation_name(const std::string &name) { state().simulationName = name; }
 void set_output_file_name(const std::string &name) { state().outputFileName = name; }
 void set_max_iterations(std::uint64_t iterations) { state().maxIterations = iterations; }

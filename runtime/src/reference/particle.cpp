@@ -8,7 +8,7 @@ using detail::state;
 
 std::size_t Particle::get_id() const { return store_->id[index_]; }
 
-ParticleVec Particle::get_pos() const { return store_->pos[index_]; }
+ParticleVec Particle::get_pos() const { return image_ ? *image_ : store_->pos[index_]; }
 void Particle::set_pos(const ParticleVec &pos) { store_->pos[index_] = state().store(pos); }
 ParticleVec Particle::get_vel() const { return store_->vel[index_]; }
 void Particle::set_vel(const ParticleVec &vel) { store_->vel[index_] = state().store(vel); }

@@ -22,20 +22,36 @@ using detail::state;
 
 namespace {
 
-void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, double radius) {
+void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, double radius,
+                    const detail::Box &box) {
   detail::ParticleStore snapshot = live;
   detail::CellList<dimensions> cells;
   cells.build(snapshot.pos, snapshot.id, radius);
   std::vector<std::size_t> indices;
+  std::vector<ParticleVec> images;
   std::vector<Particle> neighbours;
   for (std::size_t i = 0; i < live.size(); ++i) {
-    cells.neighbours(i, indices);
+    if (box.anyPeriodic())
+      cells.periodicNeighbours(i, box, indices, images,
+                               [](double v) { return state().store(v); });
+    else
+      cells.neighbours(i, indices);
     neighbours.clear();
-    for (std::size_t j : indices)
-      neighbours.emplace_back(&snapshot, j); // const: read-only
+    for (std::size_t k = 0; k < indices.size(); ++k) // const: read-only
+      neighbours.emplace_back(&snapshot, indices[k], box.anyPeriodic() ? &images[k] : nullptr);
     Particle self(&live, i);
     kernel(self, neighbours);
   }
+}
+
+/// On periodic axes, positions wrap into the box after every kernel.
+void wrapPositions(detail::State &s) {
+  if (!s.box.anyPeriodic())
+    return;
+  for (ParticleVec &p : s.particles.pos)
+    for (int a = 0; a < dimensions; ++a)
+      if (s.box.periodic[a])
+        *p[a] = s.store(s.box.wrap(p.at(a), a));
 }
 
 void runKernel(const Kernel &k, detail::State &s) {
@@ -52,9 +68,11 @@ void runKernel(const Kernel &k, detail::State &s) {
     }
     break;
   case Kernel::ForceKind:
-    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, *s.influenceRadius);
+    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, *s.influenceRadius,
+                   s.box);
     break;
   }
+  wrapPositions(s);
 }
 
 void checkFinite(const detail::State &s, std::uint64_t step, const Kernel &k) {
@@ -75,6 +93,8 @@ void start() {
   std::uint64_t steps = s.options.steps ? *s.options.steps : s.maxIterations.value_or(0);
   if (!s.options.steps && !s.maxIterations)
     throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
+  if (std::string bad = detail::checkBox(s.box, dimensions, *s.influenceRadius); !bad.empty())
+    throw RunError(bad);
   std::string base = s.outputFileName.empty() ? s.simulationName : s.outputFileName;
   detail::RunOutput output(s.options, base);
 

@@ -7,6 +7,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/detail/box.hpp>
 #include <wash/detail/frame.hpp>
 #include <wash/detail/run_output.hpp>
 #include <wash/wash.hpp>
@@ -50,6 +51,7 @@ struct State {
   std::string simulationName = "wash";
   std::string outputFileName;
   std::optional<std::uint64_t> maxIterations;
+  Box box;
   std::vector<Force> forces;
   std::vector<Kernel> kernels;
   ParticleStore particles;

@@ -46,6 +46,23 @@ void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
          << ", \"" << K.Function << "\", \"" << F << "\");\n";
 }
 
+void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,
+              const std::string &Indent) {
+  if (K.OwnWrites.count("pos"))
+    OS << Indent << "wash::backend::wrapPositions(P.pos, " << Rows << ", run.box());\n";
+}
+
+std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> &Fields) {
+  std::string V = "[](auto send) {";
+  for (const std::string &F : Fields)
+    V += " send(P." + Plan.Member.at(F) + ");";
+  return V + " }";
+}
+
+std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields) {
+  return columnsVisitor(Plan, std::vector<std::string>(Fields.begin(), Fields.end()));
+}
+
 std::string kernelComment(const Model &M, unsigned K) {
   const Kernel &Kn = M.Kernels[K];
   std::string C = "// " + Kn.Function + ": " + kernelKindName(Kn.Kind) + " kernel";

@@ -7,14 +7,6 @@
 namespace wash::tr {
 namespace {
 
-/// `[](auto send) { send(P.a); send(P.b); }`: the columns a halo transfer carries.
-std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> &Fields) {
-  std::string V = "[](auto send) {";
-  for (const std::string &F : Fields)
-    V += " send(P." + Plan.Member.at(F) + ");";
-  return V + " }";
-}
-
 void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned K,
                 const std::string &Callee) {
   const Kernel &Kn = M.Kernels[K];
@@ -27,7 +19,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
       for (const std::string &F : Kn.HaloSends)
         if (F != "pos" && F != "id")
           Sends.push_back(F);
-      OS << "    search(run.radius(), " << columnsVisitor(Plan, Sends) << ");\n";
+      OS << "    search(run.radius(), run.box(), " << columnsVisitor(Plan, Sends) << ");\n";
     } else if (!Kn.HaloSends.empty()) {
       Sends.assign(Kn.HaloSends.begin(), Kn.HaloSends.end());
       OS << "    wash::mpi::exchange(halo, " << columnsVisitor(Plan, Sends) << ");\n";
@@ -39,6 +31,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
      << "      " << Callee
      << (Kn.Kind == KernelKind::Force ? "(self, NeighbourList(grid, P.pos, i));\n" : "(self);\n")
      << "    });\n";
+  emitWrap(OS, Kn, "halo.owned", "    ");
   emitFiniteChecks(OS, Kn, Plan, "step", ", halo.owned", "    ");
 }
 
@@ -53,10 +46,13 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "std::vector<Index> order;\n"
      << "wash::mpi::Domain<" << Plan.Dim << "> domain;\n"
      << "wash::mpi::HaloPlan halo;\n\n"
-     << "/// A neighbour search: particles to their owners, a new halo carrying the\n"
-     << "/// columns `fields` visits, then everything local sorted by (cell, id).\n"
-     << "template <typename Fields> void search(double radius, Fields fields) {\n"
+     << "/// A neighbour search: particles to their owners, images across periodic\n"
+     << "/// faces, a new halo carrying the columns `fields` visits, then everything\n"
+     << "/// local sorted by (cell, id).\n"
+     << "template <typename Fields>\n"
+     << "void search(double radius, const wash::detail::Box &box, Fields fields) {\n"
      << "  wash::mpi::redistribute(P, domain, halo);\n"
+     << "  wash::backend::addImages<" << Plan.Dim << ">(P, halo.owned, box, radius, halo);\n"
      << "  wash::mpi::buildHalo(P, domain, radius, halo, fields);\n"
      << "  grid.sort(P.pos, P.id, radius, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
@@ -81,8 +77,10 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
       OS << "  " << Callees[K] << "(); // init kernel\n";
   OS << "  wash::mpi::keepInitialShare(P, domain, halo);\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
-    if (M.Kernels[K].Kind == KernelKind::Init)
+    if (M.Kernels[K].Kind == KernelKind::Init) {
+      emitWrap(OS, M.Kernels[K], "halo.owned", "  ");
       emitFiniteChecks(OS, M.Kernels[K], Plan, "0", ", halo.owned", "  ");
+    }
   OS << "  run.begin(wash::mpi::allreduceSum(halo.owned.size()), frame);\n"
      << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)

@@ -25,18 +25,21 @@ bool isForce(const Kernel &K) { return K.Kind == KernelKind::Force; }
 void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned K,
                 const std::string &Callee) {
   const Kernel &Kn = M.Kernels[K];
-  const std::string Loop = loopNamespace(Plan.Target) + "::forEachParticle";
   OS << "    " << kernelComment(M, K) << "\n";
   if (isForce(Kn)) {
     if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K)
-      OS << "    sortByCell(run.radius());\n";
+      OS << "    search(run.radius(), run.box());\n";
+    else if (!Kn.HaloSends.empty()) // periodic images: copies of what changed
+      OS << "    wash::backend::refreshImages(images, " << columnsVisitor(Plan, Kn.HaloSends)
+         << ");\n";
     emitSnapshots(OS, Kn, Plan);
   }
-  OS << "    " << Loop << "(n, [](Index i) {\n"
+  OS << "    " << loopNamespace(Plan.Target) << "::forEachParticle(images.owned, [](Index i) {\n"
      << "      Self self{i};\n"
      << "      " << Callee << (isForce(Kn) ? "(self, NeighbourList(grid, P.pos, i));\n" : "(self);\n")
      << "    });\n";
-  emitFiniteChecks(OS, Kn, Plan, "step", "", "    ");
+  emitWrap(OS, Kn, "images.owned", "    ");
+  emitFiniteChecks(OS, Kn, Plan, "step", ", images.owned", "    ");
 }
 
 } // namespace
@@ -63,7 +66,10 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "namespace wash {\n"
      << "inline constexpr int dimensions = " << Plan.Dim << ";\n"
      << "using ParticleVec = Vec<double, " << Plan.Dim << ">;\n"
-     << "} // namespace wash\n\n"
+     << "} // namespace wash\n"
+     << "// The runtime checks the settings (set_bounding_box) against it.\n"
+     << "inline const int wash_dimensions_registered =\n"
+     << "    (wash::backend::settings().dimensions = " << Plan.Dim << ");\n\n"
      << "namespace wash_gen {\n"
      << "using Real = " << (Plan.Float ? "float" : "double") << ";\n"
      << "using Stored = wash::Vec<Real, " << Plan.Dim << ">;\n"
@@ -114,14 +120,19 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << " backend) =====\n\n"
      << "namespace wash_gen {\nnamespace {\n"
      << "wash::backend::CellGrid<" << Plan.Dim << "> grid;\n"
-     << "std::vector<Index> order;\n\n"
-     << "/// A neighbour search: particles sorted by (cell, id), see docs/semantics.md.\n"
-     << "void sortByCell(double radius) {\n"
+     << "std::vector<Index> order;\n"
+     << "wash::backend::Images images; // real particles, and periodic images\n\n"
+     << "/// A neighbour search: images across periodic faces, then particles sorted\n"
+     << "/// by (cell, id), see docs/semantics.md.\n"
+     << "void search(double radius, const wash::detail::Box &box) {\n"
+     << "  wash::backend::dropImages(P, images);\n"
+     << "  wash::backend::addImages<" << Plan.Dim << ">(P, images.owned, box, radius, images);\n"
      << "  grid.sort(P.pos, P.id, radius, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
+     << "  images.permuted(order);\n"
      << "}\n\n";
   OS << "wash::detail::Frame frame() {\n"
-     << "  wash::backend::FrameBuilder f(" << Plan.Dim << ", P.id);\n";
+     << "  wash::backend::FrameBuilder f(" << Plan.Dim << ", P.id, &images.owned);\n";
   emitFrameColumns(OS, Plan);
   OS << "  return f.take();\n}\n"
      << "} // namespace\n\n";
@@ -132,11 +143,13 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << (Plan.Float ? "true" : "false") << ");\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
-      OS << "  " << Callees[K] << "(); // init kernel\n";
-      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "", "  ");
+      OS << "  " << Callees[K] << "(); // init kernel\n"
+         << "  images.ownAll(P.size());\n";
+      emitWrap(OS, M.Kernels[K], "images.owned", "  ");
+      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", ", images.owned", "  ");
     }
-  OS << "  run.begin(P.size(), frame);\n"
-     << "  const Index n = Index(P.size());\n"
+  OS << "  images.ownAll(P.size());\n"
+     << "  run.begin(P.size(), frame);\n"
      << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind != KernelKind::Init)

@@ -11,6 +11,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/detail/box.hpp>
 #include <wash/vec.hpp>
 
 #include <algorithm>
@@ -69,19 +70,85 @@ public:
   void neighbours(std::size_t i, std::vector<std::size_t> &out) const {
     out.clear();
     const Vec<double, D> &p = (*positions_)[i];
-    // Cells overlapping [p - r, p + r] on each axis, slowest axis first. Computed
-    // from the interval rather than as +-1 so rounding at cell borders cannot lose a neighbour.
+    forEachCandidate(p, [&](std::size_t j) {
+      if (j != i && withinRadius<D>(p, (*positions_)[j], radius_))
+        out.push_back(j);
+    });
+  }
+
+  /// The same in a box with periodic axes: each neighbour comes with the image
+  /// position it is seen at (box.hpp's rule, each coordinate passed through
+  /// `store`, the storage rounding), and the order is by the cell of that
+  /// image, then id. Done by brute force over the 3^P shifts, obviously right.
+  template <typename Store>
+  void periodicNeighbours(std::size_t i, const Box &box, std::vector<std::size_t> &out,
+                          std::vector<Vec<double, D>> &images, Store store) const {
+    struct Hit {
+      Key key;
+      std::uint64_t id;
+      std::size_t j;
+      Vec<double, D> image;
+    };
+    std::vector<Hit> hits;
+    const Vec<double, D> &p = (*positions_)[i];
+    std::array<int, D> k;
+    k.fill(-1);
+    for (int a = 0; a < D; ++a)
+      if (!box.periodic[a])
+        k[a] = 0;
+    while (true) {
+      Vec<double, D> query = p; // where j must be for its image x_j + kL to be near p
+      for (int a = 0; a < D; ++a)
+        *query[a] = box.shifted(p.at(a), -k[a], a);
+      forEachCandidate(query, [&](std::size_t j) {
+        Vec<double, D> image = (*positions_)[j];
+        for (int a = 0; a < D; ++a) {
+          if (!box.periodic[a])
+            continue;
+          if (box.image(image.at(a), p.at(a), a) != k[a])
+            return;
+          if (k[a] != 0)
+            *image[a] = store(box.shifted(image.at(a), k[a], a));
+        }
+        if (j != i && withinRadius<D>(p, image, radius_))
+          hits.push_back({keyOf(image), (*ids_)[j], j, image});
+      });
+      int a = D - 1;
+      while (a >= 0 && (!box.periodic[a] || k[a] == 1)) {
+        if (box.periodic[a])
+          k[a] = -1;
+        --a;
+      }
+      if (a < 0)
+        break;
+      ++k[a];
+    }
+    std::sort(hits.begin(), hits.end(), [](const Hit &x, const Hit &y) {
+      return x.key != y.key ? x.key < y.key : x.id < y.id;
+    });
+    out.clear();
+    images.clear();
+    for (const Hit &h : hits) {
+      out.push_back(h.j);
+      images.push_back(h.image);
+    }
+  }
+
+private:
+  /// Calls f(j) for every particle in the cells overlapping [q - r, q + r] on
+  /// each axis, in canonical order. The cells come from the interval rather
+  /// than as +-1 so that rounding at cell borders cannot lose a neighbour.
+  template <typename F> void forEachCandidate(const Vec<double, D> &q, F f) const {
     Key lo, hi;
     for (int a = 0; a < D; ++a) {
-      lo[D - 1 - a] = cellCoordinate(p.at(a) - radius_, radius_);
-      hi[D - 1 - a] = cellCoordinate(p.at(a) + radius_, radius_);
+      lo[D - 1 - a] = cellCoordinate(q.at(a) - radius_, radius_);
+      hi[D - 1 - a] = cellCoordinate(q.at(a) + radius_, radius_);
     }
     Key key = lo;
     while (true) {
       if (auto it = cells_.find(key); it != cells_.end())
         for (std::size_t j : it->second)
-          if (j != i && withinRadius<D>(p, (*positions_)[j], radius_))
-            out.push_back(j);
+          f(j);
       int a = D - 1; // advance the fastest axis first
       while (a >= 0 && key[a] == hi[a])
         key[a] = lo[a], --a;
@@ -91,7 +158,6 @@ public:
     }
   }
 
-private:
   struct KeyHash {
     std::size_t operator()(const Key &k) const {
       std::size_t h = 0;

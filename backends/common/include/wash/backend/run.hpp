@@ -8,6 +8,7 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/detail/box.hpp>
 #include <wash/detail/frame.hpp>
 #include <wash/detail/options.hpp>
 #include <wash/detail/progress.hpp>
@@ -29,6 +30,8 @@ struct Settings {
   std::string simulationName = "wash";
   std::string outputFileName;
   std::optional<std::uint64_t> maxIterations;
+  detail::Box box;
+  int dimensions = 0; ///< set by the generated program before main runs
 };
 Settings &settings();
 /// The program options __wrap_main found.
@@ -44,6 +47,7 @@ public:
 
   std::uint64_t steps() const { return steps_; }
   double radius() const { return radius_; }
+  const detail::Box &box() const { return settings().box; }
 
   /// After the init kernels: prints the header, writes frame 0 if due.
   template <typename FrameFn> void begin(std::size_t particles, FrameFn frame) {

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/backend/periodic.hpp>
 #include <wash/mpi/comm.hpp>
 #include <wash/mpi/domain.hpp>
 #include <wash/detail/run_output.hpp>
@@ -26,15 +27,15 @@ namespace wash::mpi {
 
 using backend::Index;
 
-struct HaloPlan {
-  std::vector<Index> owned;                   ///< positions of owned particles, ascending
+/// The owned particles and local periodic images (backend::Images), plus the
+/// copies exchanged with other ranks.
+struct HaloPlan : backend::Images {
   std::vector<std::vector<Index>> send, recv; ///< by rank: positions sent / received there
-  std::size_t ghosts = 0;
+  std::size_t ghosts = 0;                     ///< copies of other ranks' particles
 
-  /// No halo: positions 0..n-1 are all owned.
+  /// No halo and no images: positions 0..n-1 are all owned.
   void ownAll(std::size_t n) {
-    owned.resize(n);
-    std::iota(owned.begin(), owned.end(), Index(0));
+    Images::ownAll(n);
     ghosts = 0;
     send.assign(ranks(), {});
     recv.assign(ranks(), {});
@@ -42,6 +43,7 @@ struct HaloPlan {
 
   /// After columns were reordered (new[k] = old[order[k]]): follow the positions.
   void permuted(const std::vector<Index> &order) {
+    Images::permuted(order);
     std::vector<Index> where(order.size());
     for (Index k = 0; k < order.size(); ++k)
       where[order[k]] = k;
@@ -49,13 +51,6 @@ struct HaloPlan {
       for (auto &list : *lists)
         for (Index &p : list)
           p = where[p];
-    std::vector<char> isOwned(order.size(), 0);
-    for (Index p : owned)
-      isOwned[where[p]] = 1;
-    owned.clear();
-    for (Index k = 0; k < order.size(); ++k)
-      if (isOwned[k])
-        owned.push_back(k);
   }
 };
 
@@ -100,7 +95,7 @@ void transfer(const std::vector<std::vector<Index>> &send,
 
 /// Keeps only the owned particles (in their current order).
 template <typename Particles> void dropGhosts(Particles &P, HaloPlan &plan) {
-  if (plan.ghosts > 0)
+  if (plan.ghosts > 0 || !plan.image.empty())
     P.forEachColumn([&](auto &column) { backend::permute(column, plan.owned); });
   plan.ownAll(P.size());
 }
@@ -192,14 +187,16 @@ void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolera
   migrate(P, domain, plan);
 }
 
-/// Builds the halo for a new neighbour search: every owned particle within the
-/// radius of another rank's cell is copied there, with the columns `fields`
-/// visits (id and pos must be among them). Call with no ghosts.
+/// Builds the halo for a new neighbour search: every owned particle (or local
+/// periodic image) within the radius of another rank's cell is copied there,
+/// with the columns `fields` visits (id and pos must be among them). Call after
+/// redistribute and addImages: positions [0, plan.owned.size()) are owned, the
+/// rest up to P.size() are images.
 template <int D, typename Particles, typename Fields>
 void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &plan,
                Fields fields) {
   const int n = ranks(), me = rank();
-  const std::size_t owned = P.size();
+  const std::size_t owned = P.size(); // senders: owned particles and images
   using Cell = typename Domain<D>::Cell;
   // Owners of the cells around this rank's particles, computed once per cell.
   Cell lo, hi, c;
@@ -264,12 +261,11 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
   plan.send = std::move(send);
   plan.recv = std::move(recv);
   plan.ghosts = next - owned;
-  plan.owned.resize(owned);
-  std::iota(plan.owned.begin(), plan.owned.end(), Index(0));
 }
 
-/// Refreshes the halo copies of the columns `fields` visits.
+/// Refreshes the local images and then the halo copies of the columns `fields` visits.
 template <typename Fields> void exchange(const HaloPlan &plan, Fields fields) {
+  backend::refreshImages(plan, fields);
   detail::transfer(plan.send, plan.recv, fields, traffic().halo);
 }
 

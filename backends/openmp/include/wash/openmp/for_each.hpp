@@ -3,16 +3,21 @@
 
 #include <wash/backend/columns.hpp>
 
+#include <vector>
+
 namespace wash::openmp {
 
-/// Calls body(i) for every particle index, on all threads. Each call writes
-/// only particle i (the translator checked), so no atomics are needed, and the
-/// result does not depend on the thread count. Dynamic chunks even out uneven
-/// neighbour counts; particles are cell-sorted, so a chunk is a compact region.
-template <typename Body> inline void forEachParticle(backend::Index n, Body body) {
+/// Calls body(i) for every position in `rows` (the real particles), on all
+/// threads. Each call writes only particle i (the translator checked), so no
+/// atomics are needed, and the result does not depend on the thread count.
+/// Dynamic chunks even out uneven neighbour counts; particles are cell-sorted,
+/// so a chunk is a compact region.
+template <typename Body>
+inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+  const std::size_t n = rows.size();
 #pragma omp parallel for schedule(dynamic, 256)
-  for (backend::Index i = 0; i < n; ++i)
-    body(i);
+  for (std::size_t k = 0; k < n; ++k)
+    body(rows[k]);
 }
 
 } // namespace wash::openmp

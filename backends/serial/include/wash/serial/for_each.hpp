@@ -3,11 +3,14 @@
 
 #include <wash/backend/columns.hpp>
 
+#include <vector>
+
 namespace wash::serial {
 
-/// Calls body(i) for every particle index, in order.
-template <typename Body> inline void forEachParticle(backend::Index n, Body body) {
-  for (backend::Index i = 0; i < n; ++i)
+/// Calls body(i) for every position in `rows` (the real particles), in order.
+template <typename Body>
+inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+  for (backend::Index i : rows)
     body(i);
 }
 

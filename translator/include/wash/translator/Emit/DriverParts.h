@@ -6,6 +6,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace wash::tr {
 
@@ -20,6 +21,14 @@ void emitFrameColumns(std::ostream &OS, const CodePlan &Plan);
 void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
                       const std::string &Step, const std::string &Rows,
                       const std::string &Indent);
+
+/// After a kernel that writes pos: wrap the positions of Rows on periodic axes.
+void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,
+              const std::string &Indent);
+
+/// `[](auto send) { send(P.a); send(P.b); }`: a visitor of the given columns.
+std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> &Fields);
+std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields);
 
 /// `// Name: force kernel, new neighbour search` and the like.
 std::string kernelComment(const Model &M, unsigned K);

@@ -1,0 +1,121 @@
+//===- wash/backend/periodic.hpp - local periodic images ---------*- C++ -*-===//
+//
+// Across a periodic face, a neighbour is the image of a particle shifted by the
+// box length (docs/semantics.md). For a neighbour search the backends append
+// image copies of the particles within reach of a face, with shifted
+// positions and the same id, so that the ordinary cell search finds them in
+// canonical order. Kernels run only over the real particles (`owned`).
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/columns.hpp>
+#include <wash/detail/box.hpp>
+#include <wash/vec.hpp>
+
+#include <array>
+#include <numeric>
+#include <vector>
+
+namespace wash::backend {
+
+/// Which positions hold real particles, and which hold images of which.
+struct Images {
+  std::vector<Index> owned;          ///< real particles, ascending positions
+  std::vector<Index> source, image;  ///< image[m] is a copy of source[m]
+
+  /// Positions 0..n-1 are all real, and there are no images.
+  void ownAll(std::size_t n) {
+    owned.resize(n);
+    std::iota(owned.begin(), owned.end(), Index(0));
+    source.clear();
+    image.clear();
+  }
+
+  /// After columns were reordered (new[k] = old[order[k]]): follow the positions.
+  void permuted(const std::vector<Index> &order) {
+    std::vector<Index> where(order.size());
+    for (Index k = 0; k < order.size(); ++k)
+      where[order[k]] = k;
+    for (auto *list : {&source, &image})
+      for (Index &p : *list)
+        p = where[p];
+    std::vector<char> real(order.size(), 0);
+    for (Index p : owned)
+      real[where[p]] = 1;
+    owned.clear();
+    for (Index k = 0; k < order.size(); ++k)
+      if (real[k])
+        owned.push_back(k);
+  }
+};
+
+/// Appends an image of every particle among `from` (positions) that lies within
+/// reach (1.01 r, a safe superset) of a periodic face, once per combination of
+/// faces it is near, and records them.
+template <int D, typename Particles>
+void addImages(Particles &P, const std::vector<Index> &from, const detail::Box &box, double r,
+               Images &images) {
+  if (!box.anyPeriodic())
+    return;
+  const double reach = 1.01 * r;
+  for (Index i : from) {
+    std::array<std::array<int, 2>, D> options; // per axis: shifts to try (0 first)
+    std::array<int, D> count{};
+    for (int a = 0; a < D; ++a) {
+      options[a][count[a]++] = 0;
+      const double x = double(P.pos[i].at(a));
+      if (box.periodic[a] && x - box.lo[a] <= reach)
+        options[a][count[a]++] = 1;
+      else if (box.periodic[a] && box.hi[a] - x <= reach)
+        options[a][count[a]++] = -1;
+    }
+    std::array<int, D> pick{};
+    while (true) {
+      int a = 0;
+      while (a < D && pick[a] == count[a] - 1)
+        pick[a] = 0, ++a;
+      if (a == D)
+        break;
+      ++pick[a]; // the next combination; the all-zero one (the particle itself) is skipped
+      const Index copy = Index(P.size());
+      P.forEachColumn([&](auto &column) {
+        auto value = column[i];
+        column.push_back(value);
+      });
+      for (int b = 0; b < D; ++b)
+        if (int k = options[b][pick[b]])
+          *P.pos[copy][b] = decltype(P.pos[copy].at(b))(box.shifted(double(P.pos[i].at(b)), k, b));
+      images.source.push_back(i);
+      images.image.push_back(copy);
+    }
+  }
+}
+
+/// Brings the image copies of the columns `fields` visits up to date.
+template <typename Fields> void refreshImages(const Images &images, Fields fields) {
+  fields([&](auto &column) {
+    for (std::size_t m = 0; m < images.image.size(); ++m)
+      column[images.image[m]] = column[images.source[m]];
+  });
+}
+
+/// Keeps only the real particles (in their current order).
+template <typename Particles> void dropImages(Particles &P, Images &images) {
+  if (!images.image.empty())
+    P.forEachColumn([&](auto &column) { permute(column, images.owned); });
+  images.ownAll(P.size());
+}
+
+/// Wraps the positions of the given particles into the box on periodic axes.
+template <typename PosT>
+void wrapPositions(Column<PosT> &pos, const std::vector<Index> &rows, const detail::Box &box) {
+  if (!box.anyPeriodic())
+    return;
+  for (Index p : rows)
+    for (int a = 0; a < PosT::dimension; ++a)
+      if (box.periodic[a])
+        *pos[p][a] = typename PosT::value_type(box.wrap(double(pos[p].at(a)), a));
+}
+
+} // namespace wash::backend
