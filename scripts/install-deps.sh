@@ -11,7 +11,7 @@ packages=(
   libclang-$LLVM-dev libclang-cpp$LLVM-dev llvm-$LLVM-dev llvm-$LLVM-tools llvm-$LLVM-linker-tools
   libpolly-$LLVM-dev
   libgtest-dev libopenmpi-dev openmpi-bin
-  python3-numpy python3-matplotlib
+  python3-numpy python3-scipy python3-matplotlib
 )
 
 missing=()

@@ -18,12 +18,19 @@
 //    moves `pos`), the particles are reordered by (cell, id) with a parallel
 //    counting sort. The storage order then *is* the canonical order, so the
 //    neighbour candidates of a particle are one contiguous index range per cell
-//    row of its stencil, iterated straight off the cell-start array (no
-//    neighbour lists, no per-particle copies). This one search per step is
-//    shared by CalculateDensity and force_kernel. Each kernel filters the
-//    candidates of a row in chunks of 64 with a branch-free pass (the test's
-//    outcome is random, a branch on it mispredicts), then evaluates the seed's
-//    terms for the neighbours kept, in order.
+//    row of its stencil, read straight off the cell-start array.
+//  * per particle and per neighbour kernel, one branch-free scan of those
+//    candidates builds the particle's neighbour list (index and squared
+//    distance) in a per-thread buffer; the particle itself is skipped by
+//    splitting its row's range, not tested for. CalculateDensity scans once;
+//    force_kernel scans once for both its loops (pressure and viscosity) and
+//    computes each neighbour's distance (one sqrt) once for both. There are no
+//    stored neighbour lists: one particle's at a time per thread.
+//  * each loop over the list is split in a "map" pass, which computes every
+//    neighbour's terms (sqrt, the six divisions of the pressure force, the
+//    kernels' branches as selects) into per-thread arrays with independent
+//    iterations that g++ vectorises (SSE2, 2 doubles), and a "reduce" pass that
+//    adds the terms in canonical order, as the seed does (never reassociated).
 //  * the snapshot rule costs no copy beyond velocity: the reorder gathers the
 //    velocities into the snapshot buffer, force_kernel reads neighbours'
 //    velocities from it and writes the particle's new velocity to the other
@@ -354,8 +361,7 @@ template <typename F> inline void forEachStencilRow(const Grid &G, double x, dou
 // A kernel's work for particle i starts by scanning the candidates of its
 // stencil (one contiguous index range per cell row, in canonical order) once,
 // and keeping, without branches (the test's outcome is random, a branch on it
-// mispredicts), the neighbours: their index and what the kernel needs of the
-// offset. The list lives in a per-thread buffer for one particle at a time;
+// mispredicts), the neighbours: their index and squared distance. The list lives in a per-thread buffer for one particle at a time;
 // there are no stored neighbour lists. Every loop of the kernel then runs over
 // that short list in two passes: a "map" pass computing each neighbour's terms
 // into arrays (independent iterations: g++ vectorises it, sqrt and divisions
@@ -363,14 +369,14 @@ template <typename F> inline void forEachStencilRow(const Grid &G, double x, dou
 // the seed adds them in: the sums are never reassociated).
 struct NeighbourList {
   std::vector<std::uint64_t> j; // 64-bit: g++ then vectorises the map loops with doubles
-  std::vector<double> ox, oy, d2;
+  std::vector<double> d2;
   std::vector<double> t0, t1, t2, t3, t4; // per-neighbour terms (map pass)
   void ensure(std::size_t m) {
     if (j.size() >= m)
       return;
     m += m / 2 + 64;
     j.resize(m);
-    for (auto *v : {&ox, &oy, &d2, &t0, &t1, &t2, &t3, &t4})
+    for (auto *v : {&d2, &t0, &t1, &t2, &t3, &t4})
       v->resize(m);
   }
 };
@@ -396,45 +402,48 @@ inline void stencilRows(const Grid &G, double x, double y, Rows &R) {
   });
 }
 
-/// The squared distances of the neighbours of particle i (density needs no more).
-inline std::uint32_t listDistances(const Grid &G, const double *px, const double *py,
-                                   std::uint32_t i, NeighbourList &L) {
-  const double x = px[i], y = py[i];
-  Rows R;
-  stencilRows(G, x, y, R);
-  L.ensure(R.total);
-  double *d2out = L.d2.data();
-  std::uint32_t m = 0;
-  for (int row = 0; row < R.count; ++row)
-    for (std::uint32_t j = R.b[row]; j < R.e[row]; ++j) {
-      const double ox = px[j] - x, oy = py[j] - y;
-      const double d2 = ox * ox + oy * oy; // withinRadius: (0 + dx*dx) + dy*dy
-      d2out[m] = d2;
-      m += std::uint32_t((d2 <= r2) & (j != i));
-    }
+/// Appends to the list the candidates [b, e) within the radius of (x, y):
+/// their squared distance and, if WithIndex, their index. Branch-free: the
+/// entry is always written, and kept (the count advanced) if it passes the
+/// test. (A two-lane SSE2 version of this loop was no faster.)
+template <bool WithIndex>
+inline std::uint32_t scanRange(const double *__restrict px, const double *__restrict py, double x,
+                               double y, std::uint32_t b, std::uint32_t e,
+                               std::uint64_t *__restrict jout, double *__restrict d2out,
+                               std::uint32_t m) {
+  for (std::uint32_t j = b; j < e; ++j) {
+    const double ox = px[j] - x, oy = py[j] - y;
+    const double d2 = ox * ox + oy * oy; // withinRadius: (0 + dx*dx) + dy*dy, 0 + a == a here
+    d2out[m] = d2;
+    if constexpr (WithIndex)
+      jout[m] = j;
+    m += std::uint32_t(d2 <= r2);
+  }
   return m;
 }
 
-/// Index, offset and squared distance of the neighbours of particle i.
+/// The neighbours of particle i, in canonical order: squared distances and, if
+/// WithIndex, indices (the density needs no more than the distances; the force
+/// kernels recompute the offsets, an exact subtraction, from the indices).
+template <bool WithIndex>
 inline std::uint32_t listNeighbours(const Grid &G, const double *px, const double *py,
                                     std::uint32_t i, NeighbourList &L) {
   const double x = px[i], y = py[i];
   Rows R;
   stencilRows(G, x, y, R);
   L.ensure(R.total);
-  std::uint64_t *jout = L.j.data();
-  double *oxout = L.ox.data(), *oyout = L.oy.data(), *d2out = L.d2.data();
   std::uint32_t m = 0;
-  for (int row = 0; row < R.count; ++row)
-    for (std::uint32_t j = R.b[row]; j < R.e[row]; ++j) {
-      const double ox = px[j] - x, oy = py[j] - y;
-      const double d2 = ox * ox + oy * oy;
-      jout[m] = j;
-      oxout[m] = ox;
-      oyout[m] = oy;
-      d2out[m] = d2;
-      m += std::uint32_t((d2 <= r2) & (j != i));
+  std::uint64_t *jout = L.j.data();
+  double *d2out = L.d2.data();
+  for (int row = 0; row < R.count; ++row) {
+    const std::uint32_t b = R.b[row], e = R.e[row];
+    if (b <= i && i < e) { // the particle itself: skipped by splitting the range
+      m = scanRange<WithIndex>(px, py, x, y, b, i, jout, d2out, m);
+      m = scanRange<WithIndex>(px, py, x, y, i + 1, e, jout, d2out, m);
+    } else {
+      m = scanRange<WithIndex>(px, py, x, y, b, e, jout, d2out, m);
     }
+  }
   return m;
 }
 
@@ -449,7 +458,7 @@ void calculateDensity(Particles &P, const Grid &G) {
     NeighbourList L;
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t m = listDistances(G, px, py, std::uint32_t(i), L);
+      const std::uint32_t m = listNeighbours<false>(G, px, py, std::uint32_t(i), L);
       const double *d2 = L.d2.data();
       double *dk = L.t0.data(), *ndk = L.t1.data();
       for (std::uint32_t k = 0; k < m; ++k) { // map
@@ -475,8 +484,8 @@ void calculateDensity(Particles &P, const Grid &G) {
 
 /// The terms of each neighbour in force_kernel (independent: vectorised).
 inline void forceTerms(std::uint32_t m, const std::uint64_t *__restrict nj,
-                       const double *__restrict nox, const double *__restrict noy,
-                       const double *__restrict nd2, const double *__restrict rho,
+                       const double *__restrict px, const double *__restrict py, const double x,
+                       const double y, const double *__restrict nd2, const double *__restrict rho,
                        const double *__restrict nrho, const double *__restrict pres,
                        const double *__restrict npres, const double pressure,
                        const double nearPressure, double *__restrict tx1,
@@ -484,7 +493,7 @@ inline void forceTerms(std::uint32_t m, const std::uint64_t *__restrict nj,
                        double *__restrict tw) {
   for (std::uint32_t k = 0; k < m; ++k) {
     const std::uint64_t j = nj[k];
-    const double ox = nox[k], oy = noy[k];
+    const double ox = px[j] - x, oy = py[j] - y; // offsetToNeighbour
     const double dst = std::sqrt(nd2[k]);
     const bool pos = dst > 0.0;
     const double dirx = pos ? ox / dst : 0.0;
@@ -523,16 +532,15 @@ void forceAndUpdate(Particles &P, const Grid &G, const Scene &scene) {
     NeighbourList L;
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t m = listNeighbours(G, px, py, std::uint32_t(i), L);
+      const std::uint32_t m = listNeighbours<true>(G, px, py, std::uint32_t(i), L);
       const std::uint64_t *__restrict nj = L.j.data();
-      const double *__restrict nox = L.ox.data(), *__restrict noy = L.oy.data(),
-                   *__restrict nd2 = L.d2.data();
+      const double *__restrict nd2 = L.d2.data();
       double *__restrict tx1 = L.t0.data(), *__restrict ty1 = L.t1.data(),
              *__restrict tx2 = L.t2.data(), *__restrict ty2 = L.t3.data(),
              *__restrict tw = L.t4.data();
       // CalculatePressureForce (and the viscosity kernel's weights): map.
       const double density = rho[i];
-      forceTerms(m, nj, nox, noy, nd2, rho, nrho, pres, npres, pres[i], npres[i], tx1, ty1, tx2,
+      forceTerms(m, nj, px, py, px[i], py[i], nd2, rho, nrho, pres, npres, pres[i], npres[i], tx1, ty1, tx2,
                  ty2, tw);
       // ... reduce, in canonical order.
       double pfx = 0.0, pfy = 0.0;
