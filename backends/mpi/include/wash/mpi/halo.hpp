@@ -135,8 +135,10 @@ void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
   for (int r = 0; r < n; ++r)
     inBytes[r] = recv[r].size() * rowBytes;
   std::vector<char> in = alltoallv(out, inBytes, traffic().migration);
+  const bool allKept = keep.size() == P.size(); // the usual case: compact only if needed
   P.forEachColumn([&](auto &column) {
-    backend::permute(column, keep);
+    if (!allKept)
+      backend::permute(column, keep);
     column.resize(total);
   });
   const char *cursor = in.data();
