@@ -63,6 +63,16 @@ std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields) {
   return columnsVisitor(Plan, std::vector<std::string>(Fields.begin(), Fields.end()));
 }
 
+void emitIterations(std::ostream &OS, const Model &M,
+                    const std::function<void(unsigned)> &EmitKernel) {
+  OS << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
+  for (unsigned K = 0; K < M.Kernels.size(); ++K)
+    if (M.Kernels[K].Kind != KernelKind::Init)
+      EmitKernel(K);
+  OS << "    run.endStep(step, frame);\n"
+     << "  }\n";
+}
+
 std::string kernelComment(const Model &M, unsigned K) {
   const Kernel &Kn = M.Kernels[K];
   std::string C = "// " + Kn.Function + ": " + kernelKindName(Kn.Kind) + " kernel";

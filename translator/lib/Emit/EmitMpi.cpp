@@ -26,7 +26,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     }
     emitSnapshots(OS, Kn, Plan);
   }
-  OS << "    wash::mpi::forEachOwned(halo.owned, [](Index i) {\n"
+  OS << "    wash::mpi::forEachParticle(halo.owned, [](Index i) {\n"
      << "      Self self{i};\n"
      << "      " << Callee
      << (Kn.Kind == KernelKind::Force ? "(self, NeighbourList(grid, P.pos, i));\n" : "(self);\n")
@@ -81,14 +81,9 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
       emitWrap(OS, M.Kernels[K], "halo.owned", "  ");
       emitFiniteChecks(OS, M.Kernels[K], Plan, "0", ", halo.owned", "  ");
     }
-  OS << "  run.begin(wash::mpi::allreduceSum(halo.owned.size()), frame);\n"
-     << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
-  for (unsigned K = 0; K < M.Kernels.size(); ++K)
-    if (M.Kernels[K].Kind != KernelKind::Init)
-      emitKernel(OS, M, Plan, K, Callees[K]);
-  OS << "    run.endStep(step, frame);\n"
-     << "  }\n"
-     << "  run.finish(frame());\n"
+  OS << "  run.begin(wash::mpi::allreduceSum(halo.owned.size()), frame);\n";
+  emitIterations(OS, M, [&](unsigned K) { emitKernel(OS, M, Plan, K, Callees[K]); });
+  OS << "  run.finish(frame());\n"
      << "  const std::uint64_t steps = run.steps() ? run.steps() : 1;\n"
      << "  const std::uint64_t haloBytes = wash::mpi::allreduceSum(wash::mpi::traffic().halo);\n"
      << "  const std::uint64_t moveBytes = wash::mpi::allreduceSum(wash::mpi::traffic().migration);\n"

@@ -149,14 +149,9 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
       emitFiniteChecks(OS, M.Kernels[K], Plan, "0", ", images.owned", "  ");
     }
   OS << "  images.ownAll(P.size());\n"
-     << "  run.begin(P.size(), frame);\n"
-     << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
-  for (unsigned K = 0; K < M.Kernels.size(); ++K)
-    if (M.Kernels[K].Kind != KernelKind::Init)
-      emitKernel(OS, M, Plan, K, Callees[K]);
-  OS << "    run.endStep(step, frame);\n"
-     << "  }\n"
-     << "  run.finish(frame());\n"
+     << "  run.begin(P.size(), frame);\n";
+  emitIterations(OS, M, [&](unsigned K) { emitKernel(OS, M, Plan, K, Callees[K]); });
+  OS << "  run.finish(frame());\n"
      << "}\n} // namespace wash_gen\n";
   return OS.str();
 }

@@ -4,6 +4,7 @@
 #include "wash/translator/Emit/CodePlan.h"
 #include "wash/translator/Model.h"
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -29,6 +30,11 @@ void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,
 /// `[](auto send) { send(P.a); send(P.b); }`: a visitor of the given columns.
 std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> &Fields);
 std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields);
+
+/// The iteration loop: EmitKernel(K) for every non-init kernel, in order, then
+/// the end-of-step output.
+void emitIterations(std::ostream &OS, const Model &M,
+                    const std::function<void(unsigned)> &EmitKernel);
 
 /// `// Name: force kernel, new neighbour search` and the like.
 std::string kernelComment(const Model &M, unsigned K);
