@@ -20,3 +20,10 @@ config.environment["TERM"] = "dumb"
 # stdout when N != 0; its stderr and stdout are passed on for FileCheck.
 config.substitutions.insert(0, ("%expect_exit", "python3 " +
     os.path.join(config.test_source_root, "Inputs", "expect_exit.py")))
+
+# %cxx_check FILE: the generated code compiles against the backend runtimes.
+_includes = " ".join("-I" + os.path.join(config.wash_src_root, d) for d in [
+    "runtime/include", "backends/common/include", "backends/serial/include",
+    "backends/openmp/include", "backends/mpi/include"])
+config.substitutions.append(
+    ("%cxx_check", config.cxx + " -std=c++20 -fsyntax-only -fopenmp " + _includes))

@@ -68,7 +68,12 @@ public:
     const auto *Callee = dyn_cast<MemberExpr>(E->getCallee()->IgnoreParens());
     if (!Callee)
       return true;
-    std::string Object = text(Callee->getBase()->getSourceRange());
+    const Expr *Base = Callee->getBase()->IgnoreImplicit();
+    // `it->get_vel()` on a class iterator: the base is the `operator->` call.
+    if (const auto *Op = dyn_cast<CXXOperatorCallExpr>(Base);
+        Op && Op->getOperator() == OO_Arrow && Op->getNumArgs() > 0)
+      Base = Op->getArg(0);
+    std::string Object = text(Base->getSourceRange());
     if (Callee->isArrow())
       Object = "(*" + Object + ")";
     StringRef Method = E->getMethodDecl()->getName();

@@ -9,6 +9,7 @@
 
 #include <wash/backend/cell_grid.hpp>
 
+#include <stdexcept>
 #include <vector>
 
 namespace wash::backend {
@@ -66,6 +67,15 @@ public:
   std::size_t size() const { return std::size_t(end_ - begin_); }
   bool empty() const { return begin_ == end_; }
   const NeighbourRef &operator[](std::size_t k) const { return begin_[k]; }
+  const NeighbourRef &at(std::size_t k) const {
+    if (k >= size())
+      throw std::out_of_range("wash: neighbour index out of range");
+    return begin_[k];
+  }
+  const NeighbourRef &front() const { return *begin_; }
+  const NeighbourRef &back() const { return end_[-1]; }
+  const NeighbourRef *cbegin() const { return begin_; }
+  const NeighbourRef *cend() const { return end_; }
 
 private:
   static std::vector<NeighbourRef> &threadBuffer() {
