@@ -2,6 +2,7 @@
 // Built once for 2D and once for 3D.
 #include "state.hpp"
 
+#include <wash/detail/variables.hpp>
 #include <wash/wash.hpp>
 
 #include <gtest/gtest.h>
@@ -189,4 +190,24 @@ TEST_F(ReferenceTest, APeriodicBoxMustBeLongerThanTwiceTheRadius) {
   add_init_kernel(&threeInALine);
   EXPECT_THROW(start(), detail::RunError);
   EXPECT_THROW(set_bounding_box({0.0}, {1.0}, {true}), detail::UsageError); // wrong length
+}
+
+TEST_F(ReferenceTest, VoidKernelsRunOncePerIterationInOrderAndSetVariables) {
+  detail::variables().clear();
+  add_variable("ticks", 0.0);
+  add_init_kernel(&threeInALine);
+  add_void_kernel([] { set_variable("ticks", get_variable("ticks") + 1.0); });
+  add_update_kernel([](Particle &p) { p.set_density(get_variable("ticks")); });
+  state().options.steps = 3;
+  start();
+  EXPECT_EQ(get_variable("ticks"), 3.0);
+  EXPECT_EQ(state().particles.density[2], 3.0); // the update after the void kernel saw it
+}
+
+TEST_F(ReferenceTest, UnknownOrDuplicateVariablesAreErrorsAtTheUse) {
+  detail::variables().clear();
+  EXPECT_THROW(get_variable("nope"), detail::UsageError);
+  EXPECT_THROW(set_variable("nope", 1.0), detail::UsageError);
+  add_variable("dt", 0.1);
+  EXPECT_THROW(add_variable("dt", 0.2), detail::UsageError);
 }

@@ -35,6 +35,8 @@ const char *kernelKindName(KernelKind K) {
     return "update";
   case KernelKind::Force:
     return "force";
+  case KernelKind::Void:
+    return "void";
   }
   return "?";
 }

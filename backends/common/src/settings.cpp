@@ -1,32 +1,28 @@
 // wash/settings.hpp for generated programs: the same checks as the reference.
 #include <wash/backend/run.hpp>
+#include <wash/detail/variables.hpp>
 #include <wash/settings.hpp>
 
 namespace wash {
 
-namespace {
-[[noreturn]] void usageError(const std::source_location &loc, const std::string &message) {
-  throw detail::UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ":" +
-                           std::to_string(loc.column()) + ": error: " + message);
-}
-} // namespace
+using detail::usageErrorAt;
 
 void set_precision(const std::string &precision, std::source_location loc) {
   if (precision != "double" && precision != "float")
-    usageError(loc, "precision must be \"double\" or \"float\", not \"" + precision + "\"");
+    usageErrorAt(loc, "precision must be \"double\" or \"float\", not \"" + precision + "\"");
   backend::settings().useFloat = precision == "float";
 }
 
 void set_influence_radius(double radius, std::source_location loc) {
   if (!(radius > 0.0) || !std::isfinite(radius))
-    usageError(loc, "influence radius must be a positive number");
+    usageErrorAt(loc, "influence radius must be a positive number");
   backend::settings().influenceRadius = radius;
 }
 
 void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
                       const std::vector<bool> &periodic, std::source_location loc) {
   if (!detail::setBox(backend::settings().box, backend::settings().dimensions, lo, hi, periodic))
-    usageError(loc, "set_bounding_box needs " + std::to_string(backend::settings().dimensions) +
+    usageErrorAt(loc, "set_bounding_box needs " + std::to_string(backend::settings().dimensions) +
                         " values for lo, hi and periodic, with hi > lo on every axis");
 }
 

@@ -25,6 +25,17 @@ void set_output_file_name(const std::string &name);
 /// Number of iterations start() runs (the --steps option overrides it).
 void set_max_iterations(std::uint64_t iterations);
 
+/// Global variables: named doubles shared by the whole simulation. Add them in
+/// main before use; any kernel may read them, but only main, init kernels and
+/// void kernels may set them (a per-particle kernel
+/// writing one would race with itself). Using a name never added is an error.
+void add_variable(const std::string &name, double initial,
+                  std::source_location loc = std::source_location::current());
+double get_variable(const std::string &name,
+                    std::source_location loc = std::source_location::current());
+void set_variable(const std::string &name, double value,
+                  std::source_location loc = std::source_location::current());
+
 /// The simulation box [lo, hi) and, per axis, whether it is periodic. On a
 /// periodic axis positions wrap into [lo, hi) and neighbours are found across
 /// the faces (a neighbour's get_pos() is then its nearest image); the box must

@@ -81,6 +81,7 @@ private:
 using InitKernel = void (*)();
 using UpdateKernel = void (*)(Particle &);
 using ForceKernel = void (*)(Particle &, const std::vector<Particle> &);
+using VoidKernel = void (*)();
 
 /// Registers a named property: dim 1 is a scalar, dim == WASH_DIM a vector.
 void add_force(const std::string &name, int dim,
@@ -92,6 +93,9 @@ void add_force(const std::string &name, int dim,
 void add_init_kernel(InitKernel kernel);
 void add_update_kernel(UpdateKernel kernel);
 void add_force_kernel(ForceKernel kernel);
+/// A kernel run once per iteration at its place in the order, for no particle
+/// (to update global variables, say).
+void add_void_kernel(VoidKernel kernel);
 
 /// Adds a particle (only from an init kernel). The reference stays valid until
 /// the next create_particle call.

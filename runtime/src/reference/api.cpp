@@ -85,6 +85,9 @@ void add_update_kernel(UpdateKernel kernel) {
 void add_force_kernel(ForceKernel kernel) {
   addKernel(detail::Kernel::ForceKind, reinterpret_cast<void *>(kernel), "force");
 }
+void add_void_kernel(VoidKernel kernel) {
+  addKernel(detail::Kernel::Void, reinterpret_cast<void *>(kernel), "void");
+}
 
 Particle &create_particle(double density, double mass, double smoothingLength,
                           const ParticleVec &pos, const ParticleVec &vel,

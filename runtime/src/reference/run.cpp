@@ -67,6 +67,9 @@ void runKernel(const Kernel &k, detail::State &s) {
       reinterpret_cast<UpdateKernel>(k.function)(self);
     }
     break;
+  case Kernel::Void:
+    reinterpret_cast<VoidKernel>(k.function)();
+    break;
   case Kernel::ForceKind:
     runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, *s.influenceRadius,
                    s.box);

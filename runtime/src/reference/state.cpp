@@ -1,5 +1,7 @@
 #include "state.hpp"
 
+#include <wash/detail/variables.hpp>
+
 #include <algorithm>
 
 namespace wash::detail {
@@ -10,8 +12,7 @@ State &state() {
 }
 
 void usageError(const std::source_location &loc, const std::string &message) {
-  throw UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ":" +
-                   std::to_string(loc.column()) + ": error: " + message);
+  usageErrorAt(loc, message);
 }
 
 // Out of line on purpose: g++ 12 at -O2, inlining this into the vector

@@ -39,7 +39,7 @@ struct Force {
 };
 
 struct Kernel {
-  enum Kind { Init, Update, ForceKind } kind;
+  enum Kind { Init, Update, ForceKind, Void } kind;
   void *function;
   std::string name; ///< from the symbol table, for messages
 };

@@ -11,6 +11,10 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
                 const std::string &Callee) {
   const Kernel &Kn = M.Kernels[K];
   OS << "    " << kernelComment(M, K) << "\n";
+  if (Kn.Kind == KernelKind::Void) { // every rank runs it, as every rank ran main
+    OS << "    " << Callee << "();\n";
+    return;
+  }
   if (Kn.Kind == KernelKind::Force) {
     std::vector<std::string> Sends;
     if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K) {

@@ -26,6 +26,10 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
                 const std::string &Callee) {
   const Kernel &Kn = M.Kernels[K];
   OS << "    " << kernelComment(M, K) << "\n";
+  if (Kn.Kind == KernelKind::Void) {
+    OS << "    " << Callee << "();\n";
+    return;
+  }
   if (isForce(Kn)) {
     if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K)
       OS << "    search(run.radius(), run.box());\n";

@@ -110,9 +110,12 @@ private:
       M.Sim.OutputFileNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
     } else if (Name == "add_force") {
       addForce(CE);
+    } else if (Name == "set_bounding_box" || Name == "add_variable") {
+      // Run-time settings: the generated program makes the same call.
     } else {
       KernelKind Kind = Name == "add_init_kernel"     ? KernelKind::Init
                         : Name == "add_update_kernel" ? KernelKind::Update
+                        : Name == "add_void_kernel"   ? KernelKind::Void
                                                       : KernelKind::Force;
       if (const FunctionDecl *Def = resolveKernel(CE, Kind, Ctx, D)) {
         Kernel K;

@@ -223,6 +223,12 @@ void KernelAnalyser::call(const CallExpr *CE) {
       add({F, Target::Own, Mode::Write, std::nullopt, D.toPos(CE->getBeginLoc())});
     return;
   }
+  if (isWashFunction(FD, "set_variable") &&
+      (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)) {
+    D.report(DiagId::VariableWriteInParticleKernel, CE->getBeginLoc(),
+             {kernelKindName(K.Kind), K.Function});
+    return;
+  }
   if (isWashFunction(FD))
     return;
   const auto *MD = dyn_cast<CXXMethodDecl>(FD);

@@ -45,7 +45,7 @@ struct ForceRegistration {
   SourcePos Pos;
 };
 
-enum class KernelKind { Init, Update, Force };
+enum class KernelKind { Init, Update, Force, Void };
 const char *kernelKindName(KernelKind K);
 
 /// Which particle an access touches, relative to the kernel's own particle.

@@ -1,0 +1,16 @@
+//===- wash/detail/variables.hpp - global variables, shared by every runtime -*- C++ -*-===//
+#pragma once
+
+#include <map>
+#include <source_location>
+#include <string>
+
+namespace wash::detail {
+
+/// The variables of this program, by name.
+std::map<std::string, double> &variables();
+
+/// `file:line:col: error: message` as a UsageError.
+[[noreturn]] void usageErrorAt(const std::source_location &loc, const std::string &message);
+
+} // namespace wash::detail
