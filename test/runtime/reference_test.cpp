@@ -2,6 +2,7 @@
 // Built once for 2D and once for 3D.
 #include "state.hpp"
 
+#include <wash/detail/reduction.hpp>
 #include <wash/detail/variables.hpp>
 #include <wash/wash.hpp>
 
@@ -210,4 +211,30 @@ TEST_F(ReferenceTest, UnknownOrDuplicateVariablesAreErrorsAtTheUse) {
   EXPECT_THROW(set_variable("nope", 1.0), detail::UsageError);
   add_variable("dt", 0.1);
   EXPECT_THROW(add_variable("dt", 0.2), detail::UsageError);
+}
+
+TEST_F(ReferenceTest, ReductionKernelsCombineAllParticlesIntoAVariable) {
+  detail::variables().clear();
+  add_variable("sum", -1.0);
+  add_variable("min", 0.0);
+  add_variable("max", 0.0);
+  add_init_kernel(&threeInALine); // x = 0, 0.5, 1; vel x = 1, 2, 3
+  auto velX = [](const Particle &p) { return p.get_vel().at(0); };
+  add_reduction_kernel(velX, Reduction::Sum, "sum");
+  add_reduction_kernel(velX, Reduction::Min, "min");
+  add_reduction_kernel(velX, Reduction::Max, "max");
+  start();
+  EXPECT_EQ(get_variable("sum"), 6.0);
+  EXPECT_EQ(get_variable("min"), 1.0);
+  EXPECT_EQ(get_variable("max"), 3.0);
+  EXPECT_THROW(add_reduction_kernel(velX, Reduction::Sum, "missing"), detail::UsageError);
+}
+
+TEST(Reduction, SumsInIdOrderMinAndMaxOfNothingAreInfinite) {
+  using detail::ReduceOp;
+  // 1e16 + 1 + -1e16 in this order is 0 in double; another order gives 1.
+  EXPECT_EQ(detail::reduceInIdOrder({1e16, 1.0, -1e16}, ReduceOp::Sum), 0.0);
+  EXPECT_EQ(detail::reduceInIdOrder({}, ReduceOp::Sum), 0.0);
+  EXPECT_EQ(detail::reduceInIdOrder({}, ReduceOp::Min), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(detail::reduceInIdOrder({}, ReduceOp::Max), -std::numeric_limits<double>::infinity());
 }

@@ -37,6 +37,8 @@ const char *kernelKindName(KernelKind K) {
     return "force";
   case KernelKind::Void:
     return "void";
+  case KernelKind::Reduction:
+    return "reduction";
   }
   return "?";
 }

@@ -84,6 +84,8 @@ void dumpModel(const Model &M, std::ostream &OS) {
        << '\n';
     printSet(M, OS, "own-reads", K.OwnReads);
     printSet(M, OS, "own-writes", K.OwnWrites);
+    if (K.Kind == KernelKind::Reduction)
+      OS << "    reduce: " << K.ReduceOp << " into '" << K.Variable << "'\n";
     if (K.Kind != KernelKind::Force)
       continue;
     printSet(M, OS, "neighbour-reads", K.NeighbourReads);

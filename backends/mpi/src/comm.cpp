@@ -92,6 +92,30 @@ std::uint64_t allreduceMin(std::uint64_t v) { return reduce(v, MPI_MIN); }
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &l) { return gatherAll(l); }
 std::vector<double> allgatherv(const std::vector<double> &l) { return gatherAll(l); }
 
+double reduceById(const std::vector<std::uint64_t> &ids, const std::vector<double> &values,
+                  const std::vector<std::uint32_t> &rows, detail::ReduceOp op) {
+  if (op != detail::ReduceOp::Sum) { // order does not matter for min and max
+    std::vector<double> mine;
+    for (std::uint32_t p : rows)
+      mine.push_back(values[p]);
+    double local = detail::reduceInIdOrder(mine, op), global = local;
+    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, op == detail::ReduceOp::Min ? MPI_MIN : MPI_MAX,
+                  MPI_COMM_WORLD);
+    return global;
+  }
+  std::vector<std::uint64_t> myIds;
+  std::vector<double> myValues;
+  for (std::uint32_t p : rows) {
+    myIds.push_back(ids[p]);
+    myValues.push_back(values[p]);
+  }
+  std::vector<std::uint64_t> allIds = allgatherv(myIds);
+  std::vector<double> allValues = allgatherv(myValues), byId(allIds.size());
+  for (std::size_t k = 0; k < allIds.size(); ++k)
+    byId[allIds[k]] = allValues[k];
+  return detail::reduceInIdOrder(byId, op);
+}
+
 detail::Frame gatherFrame(const detail::Frame &local) {
   // Every rank has the same columns in the same order; gather each to rank 0.
   auto gather = [](const auto &values) {

@@ -82,6 +82,12 @@ using InitKernel = void (*)();
 using UpdateKernel = void (*)(Particle &);
 using ForceKernel = void (*)(Particle &, const std::vector<Particle> &);
 using VoidKernel = void (*)();
+using ReductionKernel = double (*)(const Particle &);
+
+/// How a reduction kernel combines its particles' values. Sum adds them in
+/// ascending id order starting from 0 (so every backend gets the same bits);
+/// Min and Max of no particles are +inf and -inf.
+enum class Reduction { Sum, Min, Max };
 
 /// Registers a named property: dim 1 is a scalar, dim == WASH_DIM a vector.
 void add_force(const std::string &name, int dim,
@@ -96,6 +102,10 @@ void add_force_kernel(ForceKernel kernel);
 /// A kernel run once per iteration at its place in the order, for no particle
 /// (to update global variables, say).
 void add_void_kernel(VoidKernel kernel);
+/// A kernel run once per iteration at its place in the order: `variable` (added
+/// with add_variable) becomes the Sum, Min or Max over all particles of f(p).
+void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
+                          std::source_location loc = std::source_location::current());
 
 /// Adds a particle (only from an init kernel). The reference stays valid until
 /// the next create_particle call.

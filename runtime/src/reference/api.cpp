@@ -88,6 +88,13 @@ void add_force_kernel(ForceKernel kernel) {
 void add_void_kernel(VoidKernel kernel) {
   addKernel(detail::Kernel::Void, reinterpret_cast<void *>(kernel), "void");
 }
+void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
+                          std::source_location loc) {
+  get_variable(variable, loc); // it must exist
+  addKernel(detail::Kernel::ReductionKind, reinterpret_cast<void *>(kernel), "reduction");
+  state().kernels.back().reduceOp = int(op);
+  state().kernels.back().variable = variable;
+}
 
 Particle &create_particle(double density, double mass, double smoothingLength,
                           const ParticleVec &pos, const ParticleVec &vel,

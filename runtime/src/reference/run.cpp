@@ -10,6 +10,7 @@
 
 #include <wash/detail/neighbour_search.hpp>
 #include <wash/detail/progress.hpp>
+#include <wash/detail/reduction.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -70,6 +71,13 @@ void runKernel(const Kernel &k, detail::State &s) {
   case Kernel::Void:
     reinterpret_cast<VoidKernel>(k.function)();
     break;
+  case Kernel::ReductionKind: {
+    std::vector<double> values; // storage order is id order in the reference
+    for (std::size_t i = 0; i < s.particles.size(); ++i)
+      values.push_back(reinterpret_cast<ReductionKernel>(k.function)(Particle(&s.particles, i)));
+    set_variable(k.variable, detail::reduceInIdOrder(values, detail::ReduceOp(k.reduceOp)));
+    break;
+  }
   case Kernel::ForceKind:
     runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, *s.influenceRadius,
                    s.box);

@@ -39,9 +39,11 @@ struct Force {
 };
 
 struct Kernel {
-  enum Kind { Init, Update, ForceKind, Void } kind;
+  enum Kind { Init, Update, ForceKind, Void, ReductionKind } kind;
   void *function;
   std::string name; ///< from the symbol table, for messages
+  int reduceOp = 0;     ///< reduction kernels: a wash::Reduction
+  std::string variable; ///< reduction kernels: where the result goes
 };
 
 /// Everything a reference run knows. One per program.

@@ -63,6 +63,21 @@ std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields) {
   return columnsVisitor(Plan, std::vector<std::string>(Fields.begin(), Fields.end()));
 }
 
+void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee,
+                   const std::string &Loop, const std::string &Rows, const std::string &Reduce) {
+  std::string Op = K.ReduceOp == "sum" ? "Sum" : K.ReduceOp == "min" ? "Min" : "Max";
+  OS << "    {\n"
+     << "      static std::vector<double> values;\n"
+     << "      values.assign(P.size(), 0.0);\n"
+     << "      " << Loop << "(" << Rows << ", [](Index i) {\n"
+     << "        Self self{i};\n"
+     << "        values[i] = " << Callee << "(self);\n"
+     << "      });\n"
+     << "      wash::set_variable(\"" << K.Variable << "\", " << Reduce << "(P.id, values, " << Rows
+     << ", wash::detail::ReduceOp::" << Op << "));\n"
+     << "    }\n";
+}
+
 void emitIterations(std::ostream &OS, const Model &M,
                     const std::function<void(unsigned)> &EmitKernel) {
   OS << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";

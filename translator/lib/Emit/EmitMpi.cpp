@@ -15,6 +15,9 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     OS << "    " << Callee << "();\n";
     return;
   }
+  if (Kn.Kind == KernelKind::Reduction)
+    return emitReduction(OS, Kn, Callee, "wash::mpi::forEachParticle", "halo.owned",
+                         "wash::mpi::reduceById");
   if (Kn.Kind == KernelKind::Force) {
     std::vector<std::string> Sends;
     if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K) {

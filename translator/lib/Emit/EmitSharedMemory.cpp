@@ -30,6 +30,9 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     OS << "    " << Callee << "();\n";
     return;
   }
+  if (Kn.Kind == KernelKind::Reduction)
+    return emitReduction(OS, Kn, Callee, loopNamespace(Plan.Target) + "::forEachParticle",
+                         "images.owned", "wash::backend::reduceById");
   if (isForce(Kn)) {
     if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K)
       OS << "    search(run.radius(), run.box());\n";

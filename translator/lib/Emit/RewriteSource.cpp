@@ -103,7 +103,7 @@ public:
       return true;
     StringRef Name = FD->getName();
     if (Name == "add_force" || Name == "add_init_kernel" || Name == "add_update_kernel" ||
-        Name == "add_force_kernel" || Name == "add_void_kernel")
+        Name == "add_force_kernel" || Name == "add_void_kernel" || Name == "add_reduction_kernel")
       return replace(E->getSourceRange(), "(void)0 /* registered by the translator */");
     if (Name == "start" || Name == "create_particle")
       return replace(E->getCallee()->getSourceRange(), "wash_gen::" + Name.str());

@@ -116,16 +116,37 @@ private:
       KernelKind Kind = Name == "add_init_kernel"     ? KernelKind::Init
                         : Name == "add_update_kernel" ? KernelKind::Update
                         : Name == "add_void_kernel"   ? KernelKind::Void
+                        : Name == "add_reduction_kernel" ? KernelKind::Reduction
                                                       : KernelKind::Force;
       if (const FunctionDecl *Def = resolveKernel(CE, Kind, Ctx, D)) {
         Kernel K;
         K.Kind = Kind;
+        if (Kind == KernelKind::Reduction && !reduction(CE, K))
+          return;
         K.Function = Def->getQualifiedNameAsString();
         K.Pos = D.toPos(CE->getBeginLoc());
         M.Kernels.push_back(K);
         Refs.Kernels.push_back(Def);
       }
     }
+  }
+
+  /// The operation and variable of `add_reduction_kernel(&f, op, "variable")`.
+  bool reduction(const CallExpr *CE, Kernel &K) {
+    auto Op = evaluateInt(CE->getArg(1), Ctx);
+    auto Var = evaluateString(CE->getArg(2), Ctx);
+    if (!Op || *Op < 0 || *Op > 2) {
+      D.report(DiagId::ReductionNotConstant, CE->getArg(1)->getExprLoc(), {"operation"});
+      return false;
+    }
+    if (!Var) {
+      D.report(DiagId::ReductionNotConstant, CE->getArg(2)->getExprLoc(), {"variable"});
+      return false;
+    }
+    static const char *Ops[] = {"sum", "min", "max"};
+    K.ReduceOp = Ops[*Op];
+    K.Variable = *Var;
+    return true;
   }
 
   void addForce(const CallExpr *CE) {

@@ -54,7 +54,8 @@ public:
 
   void run(const FunctionDecl *Def) {
     std::vector<Roles> Params;
-    if (K.Kind != KernelKind::Init)
+    if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
+        K.Kind == KernelKind::Reduction)
       Params.push_back(RoleOwn);
     if (K.Kind == KernelKind::Force)
       Params.push_back(RoleList);

@@ -25,7 +25,7 @@ static const FunctionDecl *namedFunction(const Expr *E) {
 
 const FunctionDecl *resolveKernel(const CallExpr *Registration, KernelKind Kind, ASTContext &Ctx,
                                   Diagnoser &D) {
-  if (Registration->getNumArgs() != 1)
+  if (Registration->getNumArgs() < 1)
     return nullptr;
   const Expr *Arg = Registration->getArg(0);
   const FunctionDecl *FD = namedFunction(Arg);

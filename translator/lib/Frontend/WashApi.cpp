@@ -33,7 +33,7 @@ bool isRegistrationFunction(const FunctionDecl *FD) {
          N == "set_output_file_name" || N == "set_max_iterations" || N == "set_bounding_box" ||
          N == "add_force" ||
          N == "add_init_kernel" || N == "add_update_kernel" || N == "add_force_kernel" ||
-         N == "add_void_kernel" || N == "add_variable" ||
+         N == "add_void_kernel" || N == "add_reduction_kernel" || N == "add_variable" ||
          N == "start";
 }
 

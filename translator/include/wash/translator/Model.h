@@ -45,7 +45,7 @@ struct ForceRegistration {
   SourcePos Pos;
 };
 
-enum class KernelKind { Init, Update, Force, Void };
+enum class KernelKind { Init, Update, Force, Void, Reduction };
 const char *kernelKindName(KernelKind K);
 
 /// Which particle an access touches, relative to the kernel's own particle.
@@ -73,6 +73,9 @@ struct Kernel {
   /// kernels, then source order through calls): the first use of a force is
   /// the first element that names it.
   std::vector<Access> Accesses;
+
+  // Reduction kernels: "sum", "min" or "max", and the variable it sets.
+  std::string ReduceOp, Variable;
 
   // Filled by summariseAccesses.
   FieldSet OwnReads, OwnWrites, NeighbourReads;

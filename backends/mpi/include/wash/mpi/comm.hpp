@@ -2,6 +2,7 @@
 #pragma once
 
 #include <wash/detail/frame.hpp>
+#include <wash/detail/reduction.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -30,6 +31,12 @@ std::uint64_t allreduceMin(std::uint64_t v);
 /// Every rank's `local`, concatenated in rank order, on every rank.
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &local);
 std::vector<double> allgatherv(const std::vector<double> &local);
+
+/// A reduction kernel's result over all ranks: values[p] for this rank's
+/// particles at positions `rows`, combined in ascending id order (Sum gathers
+/// every value; Min and Max reduce locally first).
+double reduceById(const std::vector<std::uint64_t> &ids, const std::vector<double> &values,
+                  const std::vector<std::uint32_t> &rows, detail::ReduceOp op);
 
 /// The frames of all ranks, concatenated, on rank 0 (others get an empty frame).
 detail::Frame gatherFrame(const detail::Frame &local);

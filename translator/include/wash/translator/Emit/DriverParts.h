@@ -31,6 +31,11 @@ void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,
 std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> &Fields);
 std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields);
 
+/// A reduction kernel: every real particle's value (positions `Rows`, loop
+/// `Loop`), then `Reduce(P.id, values, Rows, op)` into its variable.
+void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee,
+                   const std::string &Loop, const std::string &Rows, const std::string &Reduce);
+
 /// The iteration loop: EmitKernel(K) for every non-init kernel, in order, then
 /// the end-of-step output.
 void emitIterations(std::ostream &OS, const Model &M,
