@@ -93,10 +93,35 @@ void transfer(const std::vector<std::vector<Index>> &send,
 
 } // namespace detail
 
-/// Keeps only the owned particles (in their current order).
+/// Removes the rows marked in `gone` by moving rows from the end into the
+/// holes: work in proportion to the rows removed, not to all rows (order is
+/// not kept; the next cell sort restores it).
+template <typename Particles>
+void removeRows(Particles &P, const std::vector<char> &gone) {
+  std::size_t size = P.size();
+  for (std::size_t hole = 0; hole < size; ++hole) {
+    if (!gone[hole])
+      continue;
+    while (size > hole + 1 && gone[size - 1])
+      --size;
+    if (size == hole + 1) {
+      size = hole;
+      break;
+    }
+    --size;
+    P.forEachColumn([&](auto &column) { column[hole] = column[size]; });
+  }
+  P.forEachColumn([&](auto &column) { column.resize(size); });
+}
+
+/// Keeps only the owned particles.
 template <typename Particles> void dropGhosts(Particles &P, HaloPlan &plan) {
-  if (plan.ghosts > 0 || !plan.image.empty())
-    P.forEachColumn([&](auto &column) { backend::permute(column, plan.owned); });
+  if (plan.ghosts > 0 || !plan.image.empty()) {
+    std::vector<char> gone(P.size(), 1);
+    for (Index p : plan.owned)
+      gone[p] = 0;
+    removeRows(P, gone);
+  }
   plan.ownAll(P.size());
 }
 
@@ -135,12 +160,13 @@ void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
   for (int r = 0; r < n; ++r)
     inBytes[r] = recv[r].size() * rowBytes;
   std::vector<char> in = alltoallv(out, inBytes, traffic().migration);
-  const bool allKept = keep.size() == P.size(); // the usual case: compact only if needed
-  P.forEachColumn([&](auto &column) {
-    if (!allKept)
-      backend::permute(column, keep);
-    column.resize(total);
-  });
+  if (keep.size() != P.size()) {
+    std::vector<char> gone(P.size(), 1);
+    for (Index p : keep)
+      gone[p] = 0;
+    removeRows(P, gone);
+  }
+  P.forEachColumn([&](auto &column) { column.resize(total); });
   const char *cursor = in.data();
   for (int r = 0; r < n; ++r)
     P.forEachColumn([&](auto &column) { cursor = detail::unpack(column, recv[r], cursor); });
