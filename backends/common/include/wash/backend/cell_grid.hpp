@@ -72,9 +72,9 @@ public:
     for (std::size_t c = 0; c < cells; ++c)
       cellStart_[c + 1] += cellStart_[c];
     order.resize(n);
-    fill_ = std::vector<Index>(cellStart_.begin(), cellStart_.end() - 1);
+    std::vector<Index> next(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t p = 0; p < n; ++p)
-      order[fill_[cell_[p]]++] = Index(p);
+      order[next[cell_[p]]++] = Index(p);
     for (std::size_t c = 0; c < cells; ++c)
       std::sort(order.begin() + cellStart_[c], order.begin() + cellStart_[c + 1],
                 [&](Index a, Index b) { return id[a] < id[b]; });
@@ -125,7 +125,7 @@ private:
 
   double radius_ = 1.0;
   std::array<std::int64_t, D> lo_{}, dims_{};
-  std::vector<Index> cellStart_, fill_, cell_;
+  std::vector<Index> cellStart_, cell_;
 };
 
 } // namespace wash::backend

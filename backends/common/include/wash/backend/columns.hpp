@@ -27,4 +27,35 @@ template <typename T> void permute(Column<T> &column, const std::vector<Index> &
   column.swap(scratch);
 }
 
+/// Removes the rows marked in `gone` by moving rows from the end into the
+/// holes: work in proportion to the rows removed, not to all rows (order is
+/// not kept; the next cell sort restores it).
+template <typename Particles>
+void removeRows(Particles &P, const std::vector<char> &gone) {
+  std::size_t size = P.size();
+  for (std::size_t hole = 0; hole < size; ++hole) {
+    if (!gone[hole])
+      continue;
+    while (size > hole + 1 && gone[size - 1])
+      --size;
+    if (size == hole + 1) {
+      size = hole;
+      break;
+    }
+    --size;
+    P.forEachColumn([&](auto &column) { column[hole] = column[size]; });
+  }
+  P.forEachColumn([&](auto &column) { column.resize(size); });
+}
+
+/// Keeps only the rows at positions `rows` (any order afterwards).
+template <typename Particles> void keepRows(Particles &P, const std::vector<Index> &rows) {
+  if (rows.size() == P.size())
+    return;
+  std::vector<char> gone(P.size(), 1);
+  for (Index p : rows)
+    gone[p] = 0;
+  removeRows(P, gone);
+}
+
 } // namespace wash::backend

@@ -32,19 +32,28 @@ struct Images {
     image.clear();
   }
 
-  /// After columns were reordered (new[k] = old[order[k]]): follow the positions.
-  void permuted(const std::vector<Index> &order) {
+  /// Where each old position went when columns were reordered by `order`
+  /// (new[k] = old[order[k]]).
+  static std::vector<Index> inverse(const std::vector<Index> &order) {
     std::vector<Index> where(order.size());
     for (Index k = 0; k < order.size(); ++k)
       where[order[k]] = k;
+    return where;
+  }
+
+  /// After columns were reordered by `order`: follow the positions.
+  void permuted(const std::vector<Index> &order) { moved(inverse(order)); }
+
+  /// The same, given inverse(order).
+  void moved(const std::vector<Index> &where) {
     for (auto *list : {&source, &image})
       for (Index &p : *list)
         p = where[p];
-    std::vector<char> real(order.size(), 0);
+    std::vector<char> real(where.size(), 0);
     for (Index p : owned)
       real[where[p]] = 1;
     owned.clear();
-    for (Index k = 0; k < order.size(); ++k)
+    for (Index k = 0; k < where.size(); ++k)
       if (real[k])
         owned.push_back(k);
   }
@@ -100,10 +109,9 @@ template <typename Fields> void refreshImages(const Images &images, Fields field
   });
 }
 
-/// Keeps only the real particles (in their current order).
+/// Keeps only the real particles (their order is restored by the next cell sort).
 template <typename Particles> void dropImages(Particles &P, Images &images) {
-  if (!images.image.empty())
-    P.forEachColumn([&](auto &column) { permute(column, images.owned); });
+  keepRows(P, images.owned);
   images.ownAll(P.size());
 }
 

@@ -43,10 +43,8 @@ struct HaloPlan : backend::Images {
 
   /// After columns were reordered (new[k] = old[order[k]]): follow the positions.
   void permuted(const std::vector<Index> &order) {
-    Images::permuted(order);
-    std::vector<Index> where(order.size());
-    for (Index k = 0; k < order.size(); ++k)
-      where[order[k]] = k;
+    const std::vector<Index> where = inverse(order);
+    moved(where);
     for (auto *lists : {&send, &recv})
       for (auto &list : *lists)
         for (Index &p : list)
@@ -93,35 +91,9 @@ void transfer(const std::vector<std::vector<Index>> &send,
 
 } // namespace detail
 
-/// Removes the rows marked in `gone` by moving rows from the end into the
-/// holes: work in proportion to the rows removed, not to all rows (order is
-/// not kept; the next cell sort restores it).
-template <typename Particles>
-void removeRows(Particles &P, const std::vector<char> &gone) {
-  std::size_t size = P.size();
-  for (std::size_t hole = 0; hole < size; ++hole) {
-    if (!gone[hole])
-      continue;
-    while (size > hole + 1 && gone[size - 1])
-      --size;
-    if (size == hole + 1) {
-      size = hole;
-      break;
-    }
-    --size;
-    P.forEachColumn([&](auto &column) { column[hole] = column[size]; });
-  }
-  P.forEachColumn([&](auto &column) { column.resize(size); });
-}
-
 /// Keeps only the owned particles.
 template <typename Particles> void dropGhosts(Particles &P, HaloPlan &plan) {
-  if (plan.ghosts > 0 || !plan.image.empty()) {
-    std::vector<char> gone(P.size(), 1);
-    for (Index p : plan.owned)
-      gone[p] = 0;
-    removeRows(P, gone);
-  }
+  backend::keepRows(P, plan.owned);
   plan.ownAll(P.size());
 }
 
@@ -160,12 +132,7 @@ void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
   for (int r = 0; r < n; ++r)
     inBytes[r] = recv[r].size() * rowBytes;
   std::vector<char> in = alltoallv(out, inBytes, traffic().migration);
-  if (keep.size() != P.size()) {
-    std::vector<char> gone(P.size(), 1);
-    for (Index p : keep)
-      gone[p] = 0;
-    removeRows(P, gone);
-  }
+  backend::keepRows(P, keep);
   P.forEachColumn([&](auto &column) { column.resize(total); });
   const char *cursor = in.data();
   for (int r = 0; r < n; ++r)
