@@ -1,6 +1,7 @@
 // The backends' cell grid and neighbour ranges must give the reference's
 // neighbours in the reference's canonical order, whatever the storage order.
 #include <wash/backend/neighbours.hpp>
+#include <wash/backend/search_geometry.hpp>
 #include <wash/detail/neighbour_search.hpp>
 
 #include <gtest/gtest.h>
@@ -91,4 +92,134 @@ TEST(CellGrid, SortPutsCellsInRowOrderAndIdsAscendingInside) {
   grid.sort(pos, id, 1.0, order);
   // cell (0,0): ids 2, 3; cell (1,0): id 0; cell (0,1): id 1.
   EXPECT_EQ(order, (std::vector<Index>{3, 1, 0, 2}));
+}
+
+// The smoothing-length rule: neighbours within each particle's own radius, in
+// id order, whatever cell size the backend picks.
+namespace {
+
+using Lists = std::vector<std::vector<std::uint64_t>>;
+
+template <int D> struct RadiusCloud {
+  Column<wash::Vec<double, D>> pos;
+  Column<std::uint64_t> id;
+  Column<double> h;
+};
+
+template <int D> RadiusCloud<D> radiusCloud(unsigned seed, int n, double extent, double hMin,
+                                            double hMax) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-extent, extent), uh(hMin, hMax);
+  RadiusCloud<D> c;
+  for (int k = 0; k < n; ++k) {
+    wash::Vec<double, D> v;
+    for (int a = 0; a < D; ++a)
+      *v[a] = u(rng);
+    c.pos.push_back(v);
+    c.id.push_back(std::uint64_t((k * 7919) % n));
+    c.h.push_back(uh(rng));
+  }
+  return c;
+}
+
+std::size_t pairs(const Lists &lists) {
+  std::size_t n = 0;
+  for (const auto &l : lists)
+    n += l.size();
+  return n;
+}
+
+template <int D> Lists bruteForce(const RadiusCloud<D> &c, double support) {
+  Lists out(c.pos.size());
+  for (std::size_t i = 0; i < c.pos.size(); ++i) {
+    std::vector<std::pair<std::uint64_t, std::size_t>> hits;
+    for (std::size_t j = 0; j < c.pos.size(); ++j)
+      if (j != i && wash::detail::withinRadius<D>(c.pos[i], c.pos[j], support * c.h[i]))
+        hits.push_back({c.id[j], j});
+    std::sort(hits.begin(), hits.end());
+    for (auto [id, j] : hits)
+      out[c.id[i]].push_back(id);
+  }
+  return out;
+}
+
+template <int D> Lists backendLists(RadiusCloud<D> c, double support) {
+  std::vector<Index> rows(c.pos.size());
+  for (Index i = 0; i < rows.size(); ++i)
+    rows[i] = i;
+  const SearchGeometry g =
+      smoothingGeometry(support, c.h, c.id, rows, wash::detail::Box{}, D, 1, "test");
+  CellGrid<D> grid;
+  std::vector<Index> order;
+  grid.sort(c.pos, c.id, g.cellSize, order);
+  permute(c.pos, order);
+  permute(c.id, order);
+  permute(c.h, order);
+  Lists out(c.pos.size());
+  for (Index i = 0; i < c.pos.size(); ++i)
+    for (const NeighbourRef &n : Neighbours<D, wash::Vec<double, D>>(grid, c.pos, i, c.id,
+                                                                    g.radiusOf(c.h[i])))
+      out[c.id[i]].push_back(c.id[n]);
+  return out;
+}
+
+template <int D> Lists referenceLists(const RadiusCloud<D> &c, double support) {
+  std::vector<wash::Vec<double, D>> p(c.pos.begin(), c.pos.end());
+  double largest = 0;
+  for (double h : c.h)
+    largest = std::max(largest, support * h);
+  wash::detail::CellList<D> cells;
+  cells.build(p, c.id, largest);
+  Lists out(p.size());
+  std::vector<std::size_t> found;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    cells.neighbours(i, support * c.h[i], true, found);
+    for (std::size_t j : found)
+      out[c.id[i]].push_back(c.id[j]);
+  }
+  return out;
+}
+
+} // namespace
+
+TEST(SmoothingLengthSearch, BackendAndReferenceMatchBruteForce3D) {
+  // Radii from 0.04 to 0.4: the backend's cells are a quarter of the largest.
+  RadiusCloud<3> c = radiusCloud<3>(4, 1200, 1.0, 0.02, 0.2);
+  Lists exact = bruteForce(c, 2.0);
+  ASSERT_GT(pairs(exact), 5000u);
+  EXPECT_EQ(backendLists(c, 2.0), exact);
+  EXPECT_EQ(referenceLists(c, 2.0), exact);
+}
+
+TEST(SmoothingLengthSearch, BackendAndReferenceMatchBruteForce2D) {
+  RadiusCloud<2> c = radiusCloud<2>(5, 1500, 2.0, 0.1, 0.15); // nearly uniform radii
+  Lists exact = bruteForce(c, 2.0);
+  ASSERT_GT(pairs(exact), 10000u);
+  EXPECT_EQ(backendLists(c, 2.0), exact);
+  EXPECT_EQ(referenceLists(c, 2.0), exact);
+}
+
+TEST(SmoothingLengthSearch, GeometryRejectsNegativeSmoothingLength) {
+  Column<double> h{0.1, -0.5};
+  Column<std::uint64_t> id{0, 1};
+  std::vector<Index> rows{0, 1};
+  try {
+    smoothingGeometry(2.0, h, id, rows, wash::detail::Box{}, 2, 7, "Density");
+    FAIL() << "a negative smoothing length was accepted";
+  } catch (const wash::detail::RunError &e) {
+    EXPECT_NE(std::string(e.what()).find("step 7: kernel 'Density': particle 1:"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(SmoothingLengthSearch, GeometryRejectsSupportOverHalfAPeriodicBox) {
+  wash::detail::Box box;
+  ASSERT_TRUE(wash::detail::setBox(box, 2, {0, 0}, {1, 1}, {true, false}));
+  Column<double> h{0.1, 0.3};
+  Column<std::uint64_t> id{0, 1};
+  std::vector<Index> rows{0, 1};
+  EXPECT_THROW(smoothingGeometry(2.0, h, id, rows, box, 2, 1, "K"), wash::detail::RunError);
+  h[1] = 0.2;
+  EXPECT_DOUBLE_EQ(smoothingGeometry(2.0, h, id, rows, box, 2, 1, "K").reach, 0.4);
 }

@@ -57,6 +57,7 @@ void dumpModel(const Model &M, std::ostream &OS) {
   OS << "  precision: " << M.Sim.Precision << '\n';
   OS << "  dimension: " << M.Sim.Dimension << '\n';
   printSetting(OS, "influence-radius", M.Sim.InfluenceRadius);
+  printSetting(OS, "smoothing-length-support", M.Sim.SmoothingLengthSupport);
   printSetting(OS, "max-iterations", M.Sim.MaxIterations);
   printNames(OS, "simulation-name", M.Sim.SimulationNames);
   printNames(OS, "output-file-name", M.Sim.OutputFileNames);

@@ -15,7 +15,8 @@ detail::RunOptions &programOptions() {
   return o;
 }
 
-Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writes)
+Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writes,
+         bool translatedForSupport)
     : backend_(backend), dimensions_(dimensions), useFloat_(translatedForFloat), writes_(writes) {
   const Settings &s = settings();
   const detail::RunOptions &o = programOptions();
@@ -24,12 +25,18 @@ Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writ
                            (translatedForFloat ? "float" : "double") +
                            " precision, but main asked for " +
                            (*s.useFloat ? "float" : "double"));
-  if (!s.influenceRadius)
-    throw detail::RunError("no influence radius: call wash::set_influence_radius before start()");
+  if (std::string bad = s.search.check(); !bad.empty())
+    throw detail::RunError(bad);
+  if (s.search.perParticle() != translatedForSupport)
+    throw detail::RunError(std::string("this program was translated for ") +
+                           (translatedForSupport ? "a smoothing-length" : "an influence-radius") +
+                           " neighbour search, but main asked for " +
+                           (translatedForSupport ? "an influence radius" : "smoothing lengths") +
+                           "; call the neighbour-rule setting unconditionally in main");
   if (!o.steps && !s.maxIterations)
     throw detail::RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
   steps_ = o.steps ? *o.steps : *s.maxIterations;
-  radius_ = *s.influenceRadius;
+  radius_ = s.search.radius.value_or(0.0);
   if (std::string bad = detail::checkBox(s.box, dimensions, radius_); !bad.empty())
     throw detail::RunError(bad);
   if (writes_)
@@ -56,9 +63,10 @@ Run::~Run() = default;
 void Run::started(std::size_t particles) {
   const bool talk = writes_ && !programOptions().quiet;
   if (talk)
-    std::printf("wash %s: '%s', %zu particles, %dD, %s, influence radius %g, %llu steps\n",
-                backend_.c_str(), settings().simulationName.c_str(), particles, dimensions_,
-                useFloat_ ? "float" : "double", radius_, (unsigned long long)steps_);
+    std::printf("wash %s: '%s', %zu particles, %dD, %s, %s, %llu steps\n", backend_.c_str(),
+                settings().simulationName.c_str(), particles, dimensions_,
+                useFloat_ ? "float" : "double", settings().search.describe().c_str(),
+                (unsigned long long)steps_);
   std::fflush(stdout);
   progress_ = std::make_unique<detail::Progress>(steps_, particles, talk);
 }

@@ -16,7 +16,13 @@ void set_precision(const std::string &precision, std::source_location loc) {
 void set_influence_radius(double radius, std::source_location loc) {
   if (!(radius > 0.0) || !std::isfinite(radius))
     usageErrorAt(loc, "influence radius must be a positive number");
-  backend::settings().influenceRadius = radius;
+  backend::settings().search.radius = radius;
+}
+
+void set_smoothing_length_support(double support, std::source_location loc) {
+  if (!(support > 0.0) || !std::isfinite(support))
+    usageErrorAt(loc, "the support radius must be a positive multiple of h");
+  backend::settings().search.support = support;
 }
 
 void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
@@ -25,6 +31,8 @@ void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &
     usageErrorAt(loc, "set_bounding_box needs " + std::to_string(backend::settings().dimensions) +
                         " values for lo, hi and periodic, with hi > lo on every axis");
 }
+
+void stop(std::source_location) { backend::settings().stopRequested = true; }
 
 void set_simulation_name(const std::string &name) { backend::settings().simulationName = name; }
 void set_output_file_name(const std::string &name) { backend::settings().outputFileName = name; }

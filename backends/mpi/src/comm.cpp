@@ -89,6 +89,11 @@ std::vector<char> alltoallv(const std::vector<std::vector<char>> &send,
 std::uint64_t allreduceSum(std::uint64_t v) { return reduce(v, MPI_SUM); }
 std::uint64_t allreduceMax(std::uint64_t v) { return reduce(v, MPI_MAX); }
 std::uint64_t allreduceMin(std::uint64_t v) { return reduce(v, MPI_MIN); }
+double allreduceMax(double v) {
+  double out = 0;
+  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+  return out;
+}
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &l) { return gatherAll(l); }
 std::vector<double> allgatherv(const std::vector<double> &l) { return gatherAll(l); }
 

@@ -19,6 +19,13 @@ void set_precision(const std::string &precision,
 /// Neighbours of a particle are the other particles within this distance.
 void set_influence_radius(double radius,
                           std::source_location loc = std::source_location::current());
+/// Instead of one radius: the neighbours of particle i are the other particles
+/// within `support` * h_i of it, h_i being its smoothing length when the force
+/// kernel starts, listed in ascending id order. `support` is the kernel's
+/// support radius in units of h: 2 for the cubic spline or Wendland kernels
+/// written as W(r, h) with support 2h. Call this or set_influence_radius.
+void set_smoothing_length_support(double support,
+                                  std::source_location loc = std::source_location::current());
 void set_simulation_name(const std::string &name);
 /// Base name of output files (default: the simulation name).
 void set_output_file_name(const std::string &name);

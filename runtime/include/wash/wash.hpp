@@ -117,6 +117,11 @@ Particle &create_particle(double density, double mass, double smoothingLength,
 /// output as the program options ask. Exits the program with a message on error.
 void start();
 
+/// Ends the run after the current iteration, which then counts as the last
+/// one (its frame is written as the final output). For a run to a simulated
+/// end time: only void kernels may call it, so every rank agrees when.
+void stop(std::source_location loc = std::source_location::current());
+
 } // namespace wash
 
 // Program options. The runtime strips the wash options (--steps, --out, ...;

@@ -49,7 +49,13 @@ void set_precision(const std::string &precision, std::source_location loc) {
 void set_influence_radius(double radius, std::source_location loc) {
   if (!(radius > 0.0) || !std::isfinite(radius))
     usageError(loc, "influence radius must be a positive number");
-  state().influenceRadius = radius;
+  state().search.radius = radius;
+}
+
+void set_smoothing_length_support(double support, std::source_location loc) {
+  if (!(support > 0.0) || !std::isfinite(support))
+    usageError(loc, "the support radius must be a positive multiple of h");
+  state().search.support = support;
 }
 
 void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,

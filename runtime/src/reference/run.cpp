@@ -11,6 +11,7 @@
 #include <wash/detail/neighbour_search.hpp>
 #include <wash/detail/progress.hpp>
 #include <wash/detail/reduction.hpp>
+#include <wash/detail/search.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -23,20 +24,46 @@ using detail::state;
 
 namespace {
 
-void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, double radius,
-                    const detail::Box &box) {
+/// Particle i's search radius: the influence radius, or its support radius.
+double searchRadius(const detail::SearchRule &rule, const detail::ParticleStore &snapshot,
+                    std::size_t i) {
+  return rule.perParticle() ? detail::supportRadius(*rule.support, snapshot.smoothingLength[i])
+                            : *rule.radius;
+}
+
+/// The cell size of a search: the influence radius, or the largest support
+/// radius (checked against the box, as the smoothing lengths may have grown).
+double cellSize(const detail::SearchRule &rule, const detail::ParticleStore &snapshot,
+                const detail::Box &box, const std::string &where) {
+  if (!rule.perParticle())
+    return *rule.radius;
+  double largest = 0.0;
+  for (std::size_t i = 0; i < snapshot.size(); ++i) {
+    if (std::string bad = detail::checkSmoothingLength(snapshot.smoothingLength[i]); !bad.empty())
+      throw RunError(where + "particle " + std::to_string(snapshot.id[i]) + ": " + bad);
+    largest = std::max(largest, searchRadius(rule, snapshot, i));
+  }
+  if (std::string bad = detail::checkPeriodicSupport(box, dimensions, largest); !bad.empty())
+    throw RunError(where + bad);
+  return largest > 0.0 ? largest : 1.0; // any cell size finds coincident particles
+}
+
+void runForceKernel(ForceKernel kernel, detail::ParticleStore &live,
+                    const detail::SearchRule &rule, const detail::Box &box,
+                    const std::string &where) {
   detail::ParticleStore snapshot = live;
   detail::CellList<dimensions> cells;
-  cells.build(snapshot.pos, snapshot.id, radius);
+  cells.build(snapshot.pos, snapshot.id, cellSize(rule, snapshot, box, where));
   std::vector<std::size_t> indices;
   std::vector<ParticleVec> images;
   std::vector<Particle> neighbours;
   for (std::size_t i = 0; i < live.size(); ++i) {
+    const double radius = searchRadius(rule, snapshot, i);
     if (box.anyPeriodic())
-      cells.periodicNeighbours(i, box, indices, images,
+      cells.periodicNeighbours(i, radius, rule.perParticle(), box, indices, images,
                                [](double v) { return state().store(v); });
     else
-      cells.neighbours(i, indices);
+      cells.neighbours(i, radius, rule.perParticle(), indices);
     neighbours.clear();
     for (std::size_t k = 0; k < indices.size(); ++k) // const: read-only
       neighbours.emplace_back(&snapshot, indices[k], box.anyPeriodic() ? &images[k] : nullptr);
@@ -55,7 +82,7 @@ void wrapPositions(detail::State &s) {
         *p[a] = s.store(s.box.wrap(p.at(a), a));
 }
 
-void runKernel(const Kernel &k, detail::State &s) {
+void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
   switch (k.kind) {
   case Kernel::Init:
     s.inInitKernel = true;
@@ -69,7 +96,9 @@ void runKernel(const Kernel &k, detail::State &s) {
     }
     break;
   case Kernel::Void:
+    s.inVoidKernel = true;
     reinterpret_cast<VoidKernel>(k.function)();
+    s.inVoidKernel = false;
     break;
   case Kernel::ReductionKind: {
     std::vector<double> values; // storage order is id order in the reference
@@ -79,8 +108,8 @@ void runKernel(const Kernel &k, detail::State &s) {
     break;
   }
   case Kernel::ForceKind:
-    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, *s.influenceRadius,
-                   s.box);
+    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, s.search, s.box,
+                   "step " + std::to_string(step) + ": kernel '" + k.name + "': ");
     break;
   }
   wrapPositions(s);
@@ -94,31 +123,39 @@ void checkFinite(const detail::State &s, std::uint64_t step, const Kernel &k) {
 
 } // namespace
 
+void stop(std::source_location loc) {
+  if (!state().inVoidKernel)
+    detail::usageError(loc, "wash::stop() can only be called from a void kernel");
+  state().stopRequested = true;
+}
+
 void start() {
   auto &s = state();
   if (s.started)
     throw RunError("start() was called twice");
   s.started = true;
-  if (!s.influenceRadius)
-    throw RunError("no influence radius: call wash::set_influence_radius before start()");
+  if (std::string bad = s.search.check(); !bad.empty())
+    throw RunError(bad);
   std::uint64_t steps = s.options.steps ? *s.options.steps : s.maxIterations.value_or(0);
   if (!s.options.steps && !s.maxIterations)
     throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
-  if (std::string bad = detail::checkBox(s.box, dimensions, *s.influenceRadius); !bad.empty())
+  if (std::string bad = detail::checkBox(s.box, dimensions, s.search.radius.value_or(0.0));
+      !bad.empty())
     throw RunError(bad);
   std::string base = s.outputFileName.empty() ? s.simulationName : s.outputFileName;
   detail::RunOutput output(s.options, base);
 
   for (const Kernel &k : s.kernels)
     if (k.kind == Kernel::Init) {
-      runKernel(k, s);
+      runKernel(k, s, 0);
       checkFinite(s, 0, k);
     }
   const bool talk = !s.options.quiet;
   if (talk)
-    std::printf("wash reference: '%s', %zu particles, %dD, %s, influence radius %g, %llu steps\n",
+    std::printf("wash reference: '%s', %zu particles, %dD, %s, %s, %llu steps\n",
                 s.simulationName.c_str(), s.particles.size(), dimensions,
-                s.useFloat ? "float" : "double", *s.influenceRadius, (unsigned long long)steps);
+                s.useFloat ? "float" : "double", s.search.describe().c_str(),
+                (unsigned long long)steps);
   std::fflush(stdout);
   if (output.frameDue(0, steps))
     output.writeFrame(0, s.frame(s.particles));
@@ -127,9 +164,11 @@ void start() {
   for (std::uint64_t step = 1; step <= steps; ++step) {
     for (const Kernel &k : s.kernels)
       if (k.kind != Kernel::Init) {
-        runKernel(k, s);
+        runKernel(k, s, step);
         checkFinite(s, step, k);
       }
+    if (s.stopRequested)
+      steps = step; // this step is the last: written as such
     if (output.frameDue(step, steps))
       output.writeFrame(step, s.frame(s.particles));
     progress.update(step);

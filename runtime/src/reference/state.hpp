@@ -10,6 +10,7 @@
 #include <wash/detail/box.hpp>
 #include <wash/detail/frame.hpp>
 #include <wash/detail/run_output.hpp>
+#include <wash/detail/search.hpp>
 #include <wash/wash.hpp>
 
 #include <cstdint>
@@ -49,7 +50,7 @@ struct Kernel {
 /// Everything a reference run knows. One per program.
 struct State {
   bool useFloat = false;
-  std::optional<double> influenceRadius;
+  SearchRule search;
   std::string simulationName = "wash";
   std::string outputFileName;
   std::optional<std::uint64_t> maxIterations;
@@ -58,6 +59,8 @@ struct State {
   std::vector<Kernel> kernels;
   ParticleStore particles;
   bool inInitKernel = false;
+  bool inVoidKernel = false;
+  bool stopRequested = false; ///< by wash::stop()
   bool started = false;
   RunOptions options;
 

@@ -9,7 +9,7 @@
 // CHECK: wash::backend::Run run("mpi", 2, false, wash::mpi::rank() == 0);
 // CHECK: wash::mpi::keepInitialShare(P, domain, halo);
 // CHECK-LABEL: // Density: force kernel, new neighbour search
-// CHECK-NEXT: search(run.radius(), run.box(), [](auto send) { send(P.id); send(P.pos); send(P.mass); });
+// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(), [](auto send) { send(P.id); send(P.pos); send(P.mass); });
 // CHECK: wash::mpi::forEachParticle(halo.owned, [](Index i) {
 // CHECK-LABEL: // Pressure: force kernel, reuses the neighbour search of 'Density'
 // CHECK-NEXT: wash::mpi::exchange(halo, [](auto send) { send(P.density); });

@@ -2,7 +2,7 @@
 // only after those; the neighbour search adds periodic images.
 // RUN: rm -rf %t && %wash --backend=serial -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/periodic-wrap.serial.cpp | FileCheck %s
-// CHECK: wash::backend::addImages<2>(P, images.owned, box, radius, images);
+// CHECK: wash::backend::addImages<2>(P, images.owned, box, at.reach, images);
 // CHECK-LABEL: // Count: force kernel, new neighbour search
 // CHECK-NOT: wrapPositions
 // CHECK-LABEL: // Drift: update kernel

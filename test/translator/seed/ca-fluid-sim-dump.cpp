@@ -10,6 +10,7 @@
 // CHECK-NEXT:  precision: double
 // CHECK-NEXT:  dimension: 2
 // CHECK-NEXT:  influence-radius: 0.35 @83:32
+// CHECK-NEXT:  smoothing-length-support: unset
 // CHECK-NEXT:  max-iterations: 1000 @110:30
 // CHECK-NEXT:  simulation-name: runtime argv[1] @87:35 "serial_test" @95:35
 // CHECK-NEXT:  output-file-name: runtime argv[2] @90:40 runtime argv[1] @92:40

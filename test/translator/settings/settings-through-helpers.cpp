@@ -18,6 +18,7 @@ int main() {
 // CHECK:      precision: float
 // CHECK-NEXT: dimension: 2
 // CHECK-NEXT: influence-radius: 1 @8:30
+// CHECK-NEXT: smoothing-length-support: unset
 // CHECK-NEXT: max-iterations: 30 @15:28
 // CHECK-NEXT: simulation-name: "demo" @14:29
 // CHECK-NEXT: output-file-name: unset

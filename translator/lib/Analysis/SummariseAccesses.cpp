@@ -15,6 +15,9 @@ void summariseAccesses(Model &M) {
         K.NeighbourReads.insert(A.Field);
       // Neighbour writes are rejected by the frontend and never recorded.
     }
+    // Under the smoothing-length rule the search reads h_i for each particle.
+    if (K.Kind == KernelKind::Force && M.searchesBySmoothingLength())
+      K.OwnReads.insert("smoothing_length");
   }
 }
 

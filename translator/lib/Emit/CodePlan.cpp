@@ -81,6 +81,7 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   Plan.Stem = Stem;
   Plan.Dim = M.Sim.Dimension;
   Plan.Float = M.Sim.Precision == "float";
+  Plan.SmoothingSearch = M.searchesBySmoothingLength();
 
   std::set<std::string> Taken;
   for (const std::string &B : builtinFieldNames())

@@ -88,6 +88,22 @@ void emitIterations(std::ostream &OS, const Model &M,
      << "  }\n";
 }
 
+std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std::string &Rows,
+                               const std::string &GlobalMax) {
+  if (!Plan.SmoothingSearch)
+    return "wash::backend::fixedGeometry(run.radius())";
+  return "wash::backend::smoothingGeometry(run.support(), " + Plan.readColumn("smoothing_length") +
+         ", P.id, " + Rows + ", run.box(), " + std::to_string(Plan.Dim) + ", step, \"" +
+         K.Function + "\"" + (GlobalMax.empty() ? "" : ", " + GlobalMax) + ")";
+}
+
+std::string neighbourListText(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "NeighbourList(grid, P.pos, i)";
+  return "NeighbourList(grid, P.pos, i, P.id, geometry.radiusOf(double(" +
+         Plan.readColumn("smoothing_length") + "[i])))";
+}
+
 std::string kernelComment(const Model &M, unsigned K) {
   const Kernel &Kn = M.Kernels[K];
   std::string C = "// " + Kn.Function + ": " + kernelKindName(Kn.Kind) + " kernel";

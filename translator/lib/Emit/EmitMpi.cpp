@@ -26,7 +26,10 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
       for (const std::string &F : Kn.HaloSends)
         if (F != "pos" && F != "id")
           Sends.push_back(F);
-      OS << "    search(run.radius(), run.box(), " << columnsVisitor(Plan, Sends) << ");\n";
+      OS << "    search("
+         << searchGeometryText(Plan, Kn, "halo.owned",
+                               "[](double v) { return wash::mpi::allreduceMax(v); }")
+         << ", run.box(), " << columnsVisitor(Plan, Sends) << ");\n";
     } else if (!Kn.HaloSends.empty()) {
       Sends.assign(Kn.HaloSends.begin(), Kn.HaloSends.end());
       OS << "    wash::mpi::exchange(halo, " << columnsVisitor(Plan, Sends) << ");\n";
@@ -36,7 +39,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
   OS << "    wash::mpi::forEachParticle(halo.owned, [](Index i) {\n"
      << "      Self self{i};\n"
      << "      " << Callee
-     << (Kn.Kind == KernelKind::Force ? "(self, NeighbourList(grid, P.pos, i));\n" : "(self);\n")
+     << (Kn.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ");\n" : "(self);\n")
      << "    });\n";
   emitWrap(OS, Kn, "halo.owned", "    ");
   emitFiniteChecks(OS, Kn, Plan, "step", ", halo.owned", "    ");
@@ -52,16 +55,19 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "wash::backend::CellGrid<" << Plan.Dim << "> grid;\n"
      << "std::vector<Index> order;\n"
      << "wash::mpi::Domain<" << Plan.Dim << "> domain;\n"
-     << "wash::mpi::HaloPlan halo;\n\n"
+     << "wash::mpi::HaloPlan halo;\n"
+     << "wash::backend::SearchGeometry geometry; // of the current search\n\n"
      << "/// A neighbour search: particles to their owners, images across periodic\n"
      << "/// faces, a new halo carrying the columns `fields` visits, then everything\n"
      << "/// local sorted by (cell, id).\n"
      << "template <typename Fields>\n"
-     << "void search(double radius, const wash::detail::Box &box, Fields fields) {\n"
+     << "void search(const wash::backend::SearchGeometry &at, const wash::detail::Box &box,\n"
+     << "            Fields fields) {\n"
+     << "  geometry = at;\n"
      << "  wash::mpi::redistribute(P, domain, halo);\n"
-     << "  wash::backend::addImages<" << Plan.Dim << ">(P, halo.owned, box, radius, halo);\n"
-     << "  wash::mpi::buildHalo(P, domain, radius, halo, fields);\n"
-     << "  grid.sort(P.pos, P.id, radius, order);\n"
+     << "  wash::backend::addImages<" << Plan.Dim << ">(P, halo.owned, box, at.reach, halo);\n"
+     << "  wash::mpi::buildHalo(P, domain, at.reach, halo, fields);\n"
+     << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
      << "  halo.permuted(order);\n"
      << "}\n\n"
@@ -75,13 +81,19 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
 
   OS << "void start() {\n"
      << "  wash::backend::Run run(\"mpi\", " << Plan.Dim << ", " << (Plan.Float ? "true" : "false")
-     << ", wash::mpi::rank() == 0);\n"
-     << "  domain.setCellSize(run.radius());\n"
+     << ", wash::mpi::rank() == 0" << (Plan.SmoothingSearch ? ", true" : "") << ");\n"
      << "  // Init kernels run on every rank (they must be deterministic); each rank\n"
      << "  // then keeps its share.\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init)
       OS << "  " << Callees[K] << "(); // init kernel\n";
+  if (Plan.SmoothingSearch) // domain cells: the largest support radius at the start
+    OS << "  halo.ownAll(P.size());\n"
+       << "  domain.setCellSize(wash::mpi::domainCellSize(wash::backend::smoothingGeometry(\n"
+       << "      run.support(), " << Plan.readColumn("smoothing_length")
+       << ", P.id, halo.owned, run.box(), " << Plan.Dim << ", 0, \"(start)\")));\n";
+  else
+    OS << "  domain.setCellSize(run.radius());\n";
   OS << "  wash::mpi::keepInitialShare(P, domain, halo);\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {

@@ -35,7 +35,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
                          "images.owned", "wash::backend::reduceById");
   if (isForce(Kn)) {
     if (M.Searches.at(Kn.SearchGroup).Kernels.front() == K)
-      OS << "    search(run.radius(), run.box());\n";
+      OS << "    search(" << searchGeometryText(Plan, Kn, "images.owned", "") << ", run.box());\n";
     else if (!Kn.HaloSends.empty()) // periodic images: copies of what changed
       OS << "    wash::backend::refreshImages(images, " << columnsVisitor(Plan, Kn.HaloSends)
          << ");\n";
@@ -43,7 +43,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
   }
   OS << "    " << loopNamespace(Plan.Target) << "::forEachParticle(images.owned, [](Index i) {\n"
      << "      Self self{i};\n"
-     << "      " << Callee << (isForce(Kn) ? "(self, NeighbourList(grid, P.pos, i));\n" : "(self);\n")
+     << "      " << Callee << (isForce(Kn) ? "(self, " + neighbourListText(Plan) + ");\n" : "(self);\n")
      << "    });\n";
   emitWrap(OS, Kn, "images.owned", "    ");
   emitFiniteChecks(OS, Kn, Plan, "step", ", images.owned", "    ");
@@ -128,13 +128,15 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << "namespace wash_gen {\nnamespace {\n"
      << "wash::backend::CellGrid<" << Plan.Dim << "> grid;\n"
      << "std::vector<Index> order;\n"
-     << "wash::backend::Images images; // real particles, and periodic images\n\n"
+     << "wash::backend::Images images; // real particles, and periodic images\n"
+     << "wash::backend::SearchGeometry geometry; // of the current search\n\n"
      << "/// A neighbour search: images across periodic faces, then particles sorted\n"
      << "/// by (cell, id), see docs/semantics.md.\n"
-     << "void search(double radius, const wash::detail::Box &box) {\n"
+     << "void search(const wash::backend::SearchGeometry &at, const wash::detail::Box &box) {\n"
+     << "  geometry = at;\n"
      << "  wash::backend::dropImages(P, images);\n"
-     << "  wash::backend::addImages<" << Plan.Dim << ">(P, images.owned, box, radius, images);\n"
-     << "  grid.sort(P.pos, P.id, radius, order);\n"
+     << "  wash::backend::addImages<" << Plan.Dim << ">(P, images.owned, box, at.reach, images);\n"
+     << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
      << "  images.permuted(order);\n"
      << "}\n\n";
@@ -147,7 +149,7 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
 
   OS << "void start() {\n"
      << "  wash::backend::Run run(\"" << backendName(Plan.Target) << "\", " << Plan.Dim << ", "
-     << (Plan.Float ? "true" : "false") << ");\n";
+     << (Plan.Float ? "true" : "false") << (Plan.SmoothingSearch ? ", true, true" : "") << ");\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
       OS << "  " << Callees[K] << "(); // init kernel\n"

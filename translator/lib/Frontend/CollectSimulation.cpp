@@ -101,6 +101,8 @@ private:
         M.Sim.Precision = *S;
     } else if (Name == "set_influence_radius") {
       M.Sim.InfluenceRadius = value(Arg, evaluateNumber(Arg, Ctx));
+    } else if (Name == "set_smoothing_length_support") {
+      M.Sim.SmoothingLengthSupport = value(Arg, evaluateNumber(Arg, Ctx));
     } else if (Name == "set_max_iterations") {
       auto N = evaluateInt(Arg, Ctx);
       M.Sim.MaxIterations = value(Arg, N ? std::optional(std::to_string(*N)) : std::nullopt);

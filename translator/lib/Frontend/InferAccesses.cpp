@@ -224,6 +224,10 @@ void KernelAnalyser::call(const CallExpr *CE) {
       add({F, Target::Own, Mode::Write, std::nullopt, D.toPos(CE->getBeginLoc())});
     return;
   }
+  if (isWashFunction(FD, "stop") && K.Kind != KernelKind::Void) {
+    D.report(DiagId::StopOutsideVoidKernel, CE->getBeginLoc(), {kernelKindName(K.Kind), K.Function});
+    return;
+  }
   if (isWashFunction(FD, "set_variable") &&
       (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)) {
     D.report(DiagId::VariableWriteInParticleKernel, CE->getBeginLoc(),

@@ -29,7 +29,8 @@ bool isRegistrationFunction(const FunctionDecl *FD) {
   if (!isWashFunction(FD))
     return false;
   StringRef N = FD->getName();
-  return N == "set_precision" || N == "set_influence_radius" || N == "set_simulation_name" ||
+  return N == "set_precision" || N == "set_influence_radius" ||
+         N == "set_smoothing_length_support" || N == "set_simulation_name" ||
          N == "set_output_file_name" || N == "set_max_iterations" || N == "set_bounding_box" ||
          N == "add_force" ||
          N == "add_init_kernel" || N == "add_update_kernel" || N == "add_force_kernel" ||

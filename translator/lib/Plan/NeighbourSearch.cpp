@@ -6,6 +6,7 @@ namespace wash::tr {
 void planNeighbourSearch(Model &M) {
   M.Searches.clear();
   bool PosWritten = true; // Nothing to reuse at the start of an iteration.
+  // (PosWritten: whatever the search depends on changed since it ran.)
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     Kernel &K = M.Kernels[I];
     K.SearchGroup = -1;
@@ -18,7 +19,9 @@ void planNeighbourSearch(Model &M) {
       M.Searches.back().Kernels.push_back(I);
       PosWritten = false;
     }
-    if (K.OwnWrites.count("pos"))
+    // A search depends on positions and, by smoothing length, on h too.
+    if (K.OwnWrites.count("pos") ||
+        (M.searchesBySmoothingLength() && K.OwnWrites.count("smoothing_length")))
       PosWritten = true;
   }
 }

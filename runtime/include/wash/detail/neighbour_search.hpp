@@ -7,6 +7,8 @@
 // (cell coordinate floor(pos[a] / radius)), cells in lexicographic (z,) y, x
 // order, and by ascending id inside a cell. The order depends only on the
 // particles' positions and ids, never on storage order, threads or ranks.
+// With per-particle support radii (search.hpp) the radius is particle i's own
+// and the order is by ascending id; the cells are then only a search aid.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -46,11 +48,13 @@ public:
   /// Cell key with the slowest axis first, so that array order is (z,) y, x order.
   using Key = std::array<std::int64_t, D>;
 
+  /// Cells of side `cellSize`: the influence radius, or with per-particle
+  /// radii any positive size (the reference uses the largest radius).
   void build(const std::vector<Vec<double, D>> &positions, const std::vector<std::uint64_t> &ids,
-             double radius) {
+             double cellSize) {
     positions_ = &positions;
     ids_ = &ids;
-    radius_ = radius;
+    cellSize_ = cellSize;
     cells_.clear();
     for (std::size_t i = 0; i < positions.size(); ++i)
       cells_[keyOf(positions[i])].push_back(i);
@@ -62,18 +66,27 @@ public:
   Key keyOf(const Vec<double, D> &p) const {
     Key key;
     for (int a = 0; a < D; ++a)
-      key[D - 1 - a] = cellCoordinate(p.at(a), radius_);
+      key[D - 1 - a] = cellCoordinate(p.at(a), cellSize_);
     return key;
   }
 
   /// Indices of the neighbours of particle i, in canonical order.
   void neighbours(std::size_t i, std::vector<std::size_t> &out) const {
+    neighbours(i, cellSize_, false, out);
+  }
+
+  /// The neighbours within `radius` of particle i, in cell order or, if
+  /// `byId`, in ascending id order.
+  void neighbours(std::size_t i, double radius, bool byId, std::vector<std::size_t> &out) const {
     out.clear();
     const Vec<double, D> &p = (*positions_)[i];
-    forEachCandidate(p, [&](std::size_t j) {
-      if (j != i && withinRadius<D>(p, (*positions_)[j], radius_))
+    forEachCandidate(p, radius, [&](std::size_t j) {
+      if (j != i && withinRadius<D>(p, (*positions_)[j], radius))
         out.push_back(j);
     });
+    if (byId)
+      std::sort(out.begin(), out.end(),
+                [&](std::size_t a, std::size_t b) { return (*ids_)[a] < (*ids_)[b]; });
   }
 
   /// The same in a box with periodic axes: each neighbour comes with the image
@@ -83,6 +96,14 @@ public:
   template <typename Store>
   void periodicNeighbours(std::size_t i, const Box &box, std::vector<std::size_t> &out,
                           std::vector<Vec<double, D>> &images, Store store) const {
+    periodicNeighbours(i, cellSize_, false, box, out, images, store);
+  }
+
+  /// The same within `radius` of particle i, ordered by id if `byId`.
+  template <typename Store>
+  void periodicNeighbours(std::size_t i, double radius, bool byId, const Box &box,
+                          std::vector<std::size_t> &out, std::vector<Vec<double, D>> &images,
+                          Store store) const {
     struct Hit {
       Key key;
       std::uint64_t id;
@@ -100,7 +121,7 @@ public:
       Vec<double, D> query = p; // where j must be for its image x_j + kL to be near p
       for (int a = 0; a < D; ++a)
         *query[a] = box.shifted(p.at(a), -k[a], a);
-      forEachCandidate(query, [&](std::size_t j) {
+      forEachCandidate(query, radius, [&](std::size_t j) {
         Vec<double, D> image = (*positions_)[j];
         for (int a = 0; a < D; ++a) {
           if (!box.periodic[a])
@@ -110,7 +131,7 @@ public:
           if (k[a] != 0)
             *image[a] = store(box.shifted(image.at(a), k[a], a));
         }
-        if (j != i && withinRadius<D>(p, image, radius_))
+        if (j != i && withinRadius<D>(p, image, radius))
           hits.push_back({keyOf(image), (*ids_)[j], j, image});
       });
       int a = D - 1;
@@ -123,8 +144,8 @@ public:
         break;
       ++k[a];
     }
-    std::sort(hits.begin(), hits.end(), [](const Hit &x, const Hit &y) {
-      return x.key != y.key ? x.key < y.key : x.id < y.id;
+    std::sort(hits.begin(), hits.end(), [byId](const Hit &x, const Hit &y) {
+      return x.key != y.key && !byId ? x.key < y.key : x.id < y.id;
     });
     out.clear();
     images.clear();
@@ -138,11 +159,11 @@ private:
   /// Calls f(j) for every particle in the cells overlapping [q - r, q + r] on
   /// each axis, in canonical order. The cells come from the interval rather
   /// than as +-1 so that rounding at cell borders cannot lose a neighbour.
-  template <typename F> void forEachCandidate(const Vec<double, D> &q, F f) const {
+  template <typename F> void forEachCandidate(const Vec<double, D> &q, double r, F f) const {
     Key lo, hi;
     for (int a = 0; a < D; ++a) {
-      lo[D - 1 - a] = cellCoordinate(q.at(a) - radius_, radius_);
-      hi[D - 1 - a] = cellCoordinate(q.at(a) + radius_, radius_);
+      lo[D - 1 - a] = cellCoordinate(q.at(a) - r, cellSize_);
+      hi[D - 1 - a] = cellCoordinate(q.at(a) + r, cellSize_);
     }
     Key key = lo;
     while (true) {
@@ -168,7 +189,7 @@ private:
   };
   const std::vector<Vec<double, D>> *positions_ = nullptr;
   const std::vector<std::uint64_t> *ids_ = nullptr;
-  double radius_ = 0.0;
+  double cellSize_ = 0.0;
   std::unordered_map<Key, std::vector<std::size_t>, KeyHash> cells_;
 };
 

@@ -28,6 +28,9 @@ struct Settings {
   std::string Precision = "double"; ///< "double" (the default) or "float".
   unsigned Dimension = 2;
   std::optional<SettingValue> InfluenceRadius;
+  /// set_smoothing_length_support: neighbours within k * h_i, so every force
+  /// kernel's search reads its particle's smoothing length.
+  std::optional<SettingValue> SmoothingLengthSupport;
   std::optional<SettingValue> MaxIterations;
   /// Every value main may set, in source order (it may branch on argv).
   std::vector<SettingValue> SimulationNames;
@@ -120,6 +123,7 @@ struct Model {
 
   const Field *findField(const std::string &Name) const;
   bool hasErrors() const;
+  bool searchesBySmoothingLength() const { return Sim.SmoothingLengthSupport.has_value(); }
 };
 
 /// The built-in particle properties in dump order.

@@ -3,7 +3,8 @@
 // The canonical neighbour order of docs/semantics.md, without sorting per
 // particle: particles are kept sorted by (cell, id), cells in (z,) y, x order
 // of a dense grid over the occupied cells, so the candidates of one row of the
-// stencil are one contiguous index range, already in canonical order.
+// stencil are one contiguous index range, already in canonical order (for the
+// influence-radius rule, where the cell size is the radius).
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -21,16 +22,18 @@
 
 namespace wash::backend {
 
-/// The candidates of one particle: up to 4^(D-1) contiguous index ranges.
+/// The candidates of one particle: contiguous index ranges, one per row of
+/// cells; 4^(D-1) at most for a radius up to the cell size, 10^(D-1) for one
+/// up to 4 cells (searchGeometry's bound for smoothing lengths).
 struct CandidateRanges {
-  static constexpr int capacity = 16;
+  static constexpr int capacity = 100;
   std::array<Index, capacity> begin, end;
   int count = 0;
 };
 
 template <int D> class CellGrid {
 public:
-  /// Sorts particles by (cell, id) for radius r: fills `order` (new[k] =
+  /// Sorts particles by (cell, id) for cells of side r: fills `order` (new[k] =
   /// old[order[k]]) and the cell table for the new order. Positions are read
   /// as double, whatever the storage precision.
   template <typename PosT>
@@ -83,10 +86,14 @@ public:
   /// Candidate ranges for a particle at p: the cells overlapping [p - r, p + r]
   /// on each axis, in canonical order (the reference's cell set exactly).
   void candidates(const Vec<double, D> &p, CandidateRanges &out) const {
+    candidates(p, radius_, out);
+  }
+  /// The same for a search radius r of at most 4 cells.
+  void candidates(const Vec<double, D> &p, double r, CandidateRanges &out) const {
     std::array<std::int64_t, D> from, to;
     for (int a = 0; a < D; ++a) {
-      from[a] = std::max(coordinate(p.at(a) - radius_), lo_[a]);
-      to[a] = std::min(coordinate(p.at(a) + radius_), lo_[a] + dims_[a] - 1);
+      from[a] = std::max(coordinate(p.at(a) - r), lo_[a]);
+      to[a] = std::min(coordinate(p.at(a) + r), lo_[a] + dims_[a] - 1);
     }
     out.count = 0;
     if constexpr (D == 2) {
@@ -117,6 +124,8 @@ private:
     std::size_t start = linear(first);
     Index b = cellStart_[start], e = cellStart_[start + std::size_t(lastX - first[0]) + 1];
     if (b < e) {
+      if (out.count == CandidateRanges::capacity)
+        throw std::length_error("wash: a search radius spans too many cells");
       out.begin[out.count] = b;
       out.end[out.count] = e;
       ++out.count;

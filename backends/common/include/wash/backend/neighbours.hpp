@@ -9,6 +9,8 @@
 
 #include <wash/backend/cell_grid.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -62,6 +64,42 @@ public:
     end_ = out + kept;
   }
 
+  /// The smoothing-length rule: the other particles within `radius` of
+  /// particle `self`, in ascending id order.
+  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
+             const Column<std::uint64_t> &ids, double radius) {
+    const Vec<double, D> centre(pos[self]);
+    const double r2 = radius * radius;
+    CandidateRanges ranges;
+    grid.candidates(centre, radius, ranges);
+    std::size_t candidates = 0;
+    for (int r = 0; r < ranges.count; ++r)
+      candidates += ranges.end[r] - ranges.begin[r];
+    std::vector<std::uint64_t> &keys = threadKeys();
+    if (keys.size() < candidates)
+      keys.resize(candidates);
+    std::size_t kept = 0;
+    const PosT *p = pos.data();
+    for (int r = 0; r < ranges.count; ++r)
+      for (Index j = ranges.begin[r]; j < ranges.end[r]; ++j) {
+        double d2 = 0.0;
+        for (int a = 0; a < D; ++a) {
+          double d = double(p[j].at(a)) - centre.at(a);
+          d2 += d * d;
+        }
+        keys[kept] = ids[j] << 32 | j; // ids and rows below 2^32: the order is the id's
+        kept += (j != self) & (d2 <= r2);
+      }
+    std::sort(keys.begin(), keys.begin() + std::ptrdiff_t(kept));
+    std::vector<NeighbourRef> &buffer = threadBuffer();
+    if (buffer.size() < kept)
+      buffer.resize(kept);
+    for (std::size_t k = 0; k < kept; ++k)
+      buffer[k].index = Index(keys[k] & 0xffffffffu);
+    begin_ = buffer.data();
+    end_ = begin_ + kept;
+  }
+
   const NeighbourRef *begin() const { return begin_; }
   const NeighbourRef *end() const { return end_; }
   std::size_t size() const { return std::size_t(end_ - begin_); }
@@ -81,6 +119,10 @@ private:
   static std::vector<NeighbourRef> &threadBuffer() {
     thread_local std::vector<NeighbourRef> buffer;
     return buffer;
+  }
+  static std::vector<std::uint64_t> &threadKeys() {
+    thread_local std::vector<std::uint64_t> keys;
+    return keys;
   }
 
   const NeighbourRef *begin_;

@@ -13,6 +13,15 @@
 #include <wash/backend/periodic.hpp>
 #include <wash/backend/reduce.hpp>
 #include <wash/backend/run.hpp>
+#include <wash/backend/search_geometry.hpp>
 #include <wash/math.hpp>
 #include <wash/settings.hpp>
 #include <wash/vec.hpp>
+
+#include <source_location>
+
+namespace wash {
+/// Ends the run after this iteration (wash.hpp). The translator allows it
+/// only in void kernels, which every MPI rank runs alike.
+void stop(std::source_location loc = std::source_location::current());
+} // namespace wash

@@ -13,6 +13,7 @@
 #include <wash/detail/options.hpp>
 #include <wash/detail/progress.hpp>
 #include <wash/detail/run_output.hpp>
+#include <wash/detail/search.hpp>
 #include <wash/vec.hpp>
 
 #include <cmath>
@@ -26,12 +27,13 @@ namespace wash::backend {
 /// What the simulation's main configured through wash/settings.hpp.
 struct Settings {
   std::optional<bool> useFloat;
-  std::optional<double> influenceRadius;
+  detail::SearchRule search;
   std::string simulationName = "wash";
   std::string outputFileName;
   std::optional<std::uint64_t> maxIterations;
   detail::Box box;
   int dimensions = 0; ///< set by the generated program before main runs
+  bool stopRequested = false; ///< by wash::stop() in a void kernel
 };
 Settings &settings();
 /// The program options __wrap_main found.
@@ -39,14 +41,19 @@ detail::RunOptions &programOptions();
 
 class Run {
 public:
-  /// Checks the settings against what the program was translated for. Only a
+  /// Checks the settings against what the program was translated for (its
+  /// precision and whether it searches by smoothing length). Only a
   /// run that `writes` (rank 0 of an MPI job) prints and writes files; every
   /// rank still builds the frames, which may be collective.
-  Run(const char *backend, int dimensions, bool translatedForFloat, bool writes = true);
+  Run(const char *backend, int dimensions, bool translatedForFloat, bool writes = true,
+      bool translatedForSupport = false);
   ~Run();
 
   std::uint64_t steps() const { return steps_; }
+  /// The influence radius (fixed-radius rule only).
   double radius() const { return radius_; }
+  /// The support radius in units of h (smoothing-length rule only).
+  double support() const { return *settings().search.support; }
   const detail::Box &box() const { return settings().box; }
 
   /// After the init kernels: prints the header, writes frame 0 if due.
@@ -57,6 +64,8 @@ public:
   }
   /// After every kernel of a step.
   template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
+    if (settings().stopRequested)
+      steps_ = step; // wash::stop(): this step is the last, and written as such
     if (frameDue(step))
       write(step, frame());
     if (progress_)

@@ -28,6 +28,7 @@ std::vector<std::size_t> alltoallCounts(const std::vector<std::size_t> &counts);
 std::uint64_t allreduceSum(std::uint64_t v);
 std::uint64_t allreduceMax(std::uint64_t v);
 std::uint64_t allreduceMin(std::uint64_t v);
+double allreduceMax(double v);
 /// Every rank's `local`, concatenated in rank order, on every rank.
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &local);
 std::vector<double> allgatherv(const std::vector<double> &local);

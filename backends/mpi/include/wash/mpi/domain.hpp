@@ -9,6 +9,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/backend/search_geometry.hpp>
 #include <wash/mpi/comm.hpp>
 #include <wash/vec.hpp>
 
@@ -20,6 +21,12 @@
 #include <vector>
 
 namespace wash::mpi {
+
+/// The domain's cell size under the smoothing-length rule: the largest support
+/// radius when the run starts (fixed; halos reach as far as each search needs).
+inline double domainCellSize(const backend::SearchGeometry &g) {
+  return g.reach > 0.0 ? g.reach : 1.0;
+}
 
 template <int D> class Domain {
 public:

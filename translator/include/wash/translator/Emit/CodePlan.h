@@ -21,6 +21,7 @@ struct CodePlan {
   std::string Stem; ///< The simulation file's name without extension.
   unsigned Dim = 2;
   bool Float = false; ///< Storage precision.
+  bool SmoothingSearch = false; ///< Neighbours within k * h_i (else one radius).
 
   /// Every field by name, and the live ones in storage order (Model::Fields
   /// order) with their member names.
@@ -36,6 +37,8 @@ struct CodePlan {
   std::string headerName() const { return Stem + ".wash.hpp"; }
   std::string sourceName() const;
 
+  /// `P.<member>`: the column of a stored field.
+  std::string readColumn(const std::string &Field) const { return "P." + Member.at(Field); }
   /// `P.<member>[Object]`, converted to the API type when storage is float.
   std::string readText(const std::string &Field, const std::string &Object) const;
   /// `P.<member>[Object] = Value`, converted to the storage type when float.

@@ -44,6 +44,14 @@ void emitIterations(std::ostream &OS, const Model &M,
 /// `// Name: force kernel, new neighbour search` and the like.
 std::string kernelComment(const Model &M, unsigned K);
 
+/// The SearchGeometry of a new search before kernel K: the influence radius,
+/// or from the smoothing lengths at `Rows` (GlobalMax combines ranks' maxima).
+std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std::string &Rows,
+                               const std::string &GlobalMax);
+
+/// The neighbour list of particle `i` (the search's `geometry` gives radii).
+std::string neighbourListText(const CodePlan &Plan);
+
 /// Before a force kernel: point neighbour reads of snapshotted fields at the
 /// snapshot (copied now) if the kernel writes them, else at the live column.
 void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan);

@@ -1,0 +1,77 @@
+//===- wash/backend/search_geometry.hpp - sizes of one neighbour search -*- C++ -*-===//
+//
+// What a generated search needs to know before it sorts: how far the search
+// reaches (the width of periodic images and MPI halos) and the cell size of
+// the grid. Under the influence-radius rule both are the radius. Under the
+// smoothing-length rule (detail/search.hpp) the reach is the largest support
+// radius, and the cells are finer, so that particles with small support
+// radii scan few candidates; the neighbour order (by id) does not depend on
+// the cells.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/columns.hpp>
+#include <wash/detail/run_output.hpp>
+#include <wash/detail/search.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace wash::backend {
+
+struct SearchGeometry {
+  double reach = 0.0;    ///< largest search radius
+  double cellSize = 1.0; ///< side of the grid's cells
+  double support = 0.0;  ///< smoothing-length rule: support radius in units of h
+
+  /// The search radius of a particle with smoothing length h.
+  double radiusOf(double h) const { return detail::supportRadius(support, h); }
+};
+
+inline SearchGeometry fixedGeometry(double radius) { return {radius, radius, 0.0}; }
+
+/// The geometry for the smoothing-length rule over the particles at `rows`.
+/// `globalMax` combines a rank's largest radius with the other ranks'.
+template <typename RealT, typename GlobalMax>
+SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
+                                 const Column<std::uint64_t> &ids, const std::vector<Index> &rows,
+                                 const detail::Box &box, int dims, std::uint64_t step,
+                                 const char *kernel, GlobalMax globalMax) {
+  const std::string where = "step " + std::to_string(step) + ": kernel '" + kernel + "': ";
+  double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+  for (Index p : rows) {
+    if (std::string bad = detail::checkSmoothingLength(double(h[p])); !bad.empty())
+      throw detail::RunError(where + "particle " + std::to_string(ids[p]) + ": " + bad);
+    const double r = detail::supportRadius(support, double(h[p]));
+    largest = std::max(largest, r);
+    smallest = std::min(smallest, r);
+  }
+  largest = globalMax(largest);
+  if (rows.empty())
+    smallest = largest;
+  if (std::string bad = detail::checkPeriodicSupport(box, dims, largest); !bad.empty())
+    throw detail::RunError(where + bad);
+  SearchGeometry g;
+  g.reach = largest;
+  g.support = support;
+  // Half the smallest radius, but no finer than a quarter of the largest:
+  // CandidateRanges holds the rows of a radius of up to four cells.
+  g.cellSize = std::max(largest / 4.0, smallest / 2.0);
+  if (!(g.cellSize > 0.0))
+    g.cellSize = 1.0; // all radii 0: any cell size finds coincident particles
+  return g;
+}
+
+template <typename RealT>
+SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
+                                 const Column<std::uint64_t> &ids, const std::vector<Index> &rows,
+                                 const detail::Box &box, int dims, std::uint64_t step,
+                                 const char *kernel) {
+  return smoothingGeometry(support, h, ids, rows, box, dims, step, kernel,
+                           [](double v) { return v; });
+}
+
+} // namespace wash::backend

@@ -1,0 +1,2 @@
+#include <wash/wash.hpp>
+int main() { return 0; }

@@ -1,0 +1,37 @@
+// Under the smoothing-length rule a search takes its geometry from the
+// smoothing lengths (and, with MPI, the largest over all ranks), and each
+// particle's neighbour list uses its own support radius.
+// RUN: rm -rf %t && %wash --backend=openmp -o %t/omp %s 2>/dev/null
+// RUN: grep -vE '^// [A-Z-]+:' %t/omp/smoothing-length-search.openmp.cpp | FileCheck %s
+// RUN: %wash --backend=mpi -o %t/mpi %s 2>/dev/null
+// RUN: grep -vE '^// [A-Z-]+:' %t/mpi/smoothing-length-search.mpi.cpp | FileCheck %s --check-prefix=MPI
+// CHECK: wash::backend::Run run("openmp", 3, false, true, true);
+// CHECK-LABEL: // Density: force kernel, new neighbour search
+// CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, images.owned, run.box(), 3, step, "Density"), run.box());
+// CHECK: ::Density(self, NeighbourList(grid, P.pos, i, P.id, geometry.radiusOf(double(P.smoothing_length[i]))));
+// CHECK-LABEL: // Adapt: update kernel
+// CHECK-LABEL: // Force: force kernel, new neighbour search
+// CHECK-NEXT: search(wash::backend::smoothingGeometry(
+// MPI: domain.setCellSize(wash::mpi::domainCellSize(wash::backend::smoothingGeometry(
+// MPI-LABEL: // Density: force kernel, new neighbour search
+// MPI-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, halo.owned, run.box(), 3, step, "Density", [](double v) { return wash::mpi::allreduceMax(v); }), run.box(),
+#include <wash/wash.hpp>
+#include <vector>
+
+void Density(wash::Particle &p, const std::vector<wash::Particle> &ns) {
+  p.set_density(double(ns.size()));
+}
+void Adapt(wash::Particle &p) { p.set_smoothing_length(p.get_smoothing_length() * 1.01); }
+void Force(wash::Particle &p, const std::vector<wash::Particle> &ns) {
+  wash::Vec3D towards = ns.empty() ? p.get_pos() : ns[0].get_pos();
+  p.set_acc(towards);
+}
+
+int main() {
+  wash::set_smoothing_length_support(2.0);
+  wash::set_max_iterations(1);
+  wash::add_force_kernel(&Density);
+  wash::add_update_kernel(&Adapt);
+  wash::add_force_kernel(&Force);
+  wash::start();
+}
