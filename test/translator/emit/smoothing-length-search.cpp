@@ -1,14 +1,17 @@
 // Under the smoothing-length rule a search takes its geometry from the
-// smoothing lengths (and, with MPI, the largest over all ranks), and each
-// particle's neighbour list uses its own support radius.
+// smoothing lengths (and, with MPI, the largest over all ranks) and keeps
+// every particle's list, found within its own support radius, for the kernels
+// of that search.
 // RUN: rm -rf %t && %wash --backend=openmp -o %t/omp %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/omp/smoothing-length-search.openmp.cpp | FileCheck %s
 // RUN: %wash --backend=mpi -o %t/mpi %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/mpi/smoothing-length-search.mpi.cpp | FileCheck %s --check-prefix=MPI
+// CHECK: wash::backend::NeighbourTable<3, Stored> table;
+// CHECK: table.build(grid, P.pos, P.id, P.smoothing_length, at, images.owned);
 // CHECK: wash::backend::Run run("openmp", 3, false, true, true);
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, images.owned, run.box(), 3, step, "Density"), run.box());
-// CHECK: ::Density(self, NeighbourList(grid, P.pos, i, P.id, geometry.radiusOf(double(P.smoothing_length[i]))));
+// CHECK: ::Density(self, table.list(i));
 // CHECK-LABEL: // Adapt: update kernel
 // CHECK-LABEL: // Force: force kernel, new neighbour search
 // CHECK-NEXT: search(wash::backend::smoothingGeometry(

@@ -100,8 +100,7 @@ std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std:
 std::string neighbourListText(const CodePlan &Plan) {
   if (!Plan.SmoothingSearch)
     return "NeighbourList(grid, P.pos, i)";
-  return "NeighbourList(grid, P.pos, i, P.id, geometry.radiusOf(double(" +
-         Plan.readColumn("smoothing_length") + "[i])))";
+  return "table.list(i)";
 }
 
 std::string kernelComment(const Model &M, unsigned K) {

@@ -56,7 +56,11 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "std::vector<Index> order;\n"
      << "wash::mpi::Domain<" << Plan.Dim << "> domain;\n"
      << "wash::mpi::HaloPlan halo;\n"
-     << "wash::backend::SearchGeometry geometry; // of the current search\n\n"
+     << "wash::backend::SearchGeometry geometry; // of the current search\n"
+     << (Plan.SmoothingSearch ? "wash::backend::NeighbourTable<" + std::to_string(Plan.Dim) +
+                                    ", Stored> table; // its lists\n"
+                              : std::string())
+     << "\n"
      << "/// A neighbour search: particles to their owners, images across periodic\n"
      << "/// faces, a new halo carrying the columns `fields` visits, then everything\n"
      << "/// local sorted by (cell, id).\n"
@@ -70,6 +74,9 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
      << "  halo.permuted(order);\n"
+     << (Plan.SmoothingSearch ? "  table.build(grid, P.pos, P.id, " +
+                                    Plan.readColumn("smoothing_length") + ", at, halo.owned);\n"
+                              : std::string())
      << "}\n\n"
      << "/// This rank's particles, gathered on rank 0 (collective).\n"
      << "wash::detail::Frame frame() {\n"

@@ -100,6 +100,9 @@ public:
     end_ = begin_ + kept;
   }
 
+  /// A list kept elsewhere (NeighbourTable).
+  Neighbours(const NeighbourRef *begin, const NeighbourRef *end) : begin_(begin), end_(end) {}
+
   const NeighbourRef *begin() const { return begin_; }
   const NeighbourRef *end() const { return end_; }
   std::size_t size() const { return std::size_t(end_ - begin_); }

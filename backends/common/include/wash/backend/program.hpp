@@ -9,6 +9,7 @@
 #include <wash/backend/cell_grid.hpp>
 #include <wash/backend/columns.hpp>
 #include <wash/backend/frame_builder.hpp>
+#include <wash/backend/neighbour_table.hpp>
 #include <wash/backend/neighbours.hpp>
 #include <wash/backend/periodic.hpp>
 #include <wash/backend/reduce.hpp>

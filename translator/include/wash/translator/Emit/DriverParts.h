@@ -49,7 +49,8 @@ std::string kernelComment(const Model &M, unsigned K);
 std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std::string &Rows,
                                const std::string &GlobalMax);
 
-/// The neighbour list of particle `i` (the search's `geometry` gives radii).
+/// The neighbour list of particle `i`: built now, or kept by the search's
+/// `table` (smoothing-length rule).
 std::string neighbourListText(const CodePlan &Plan);
 
 /// Before a force kernel: point neighbour reads of snapshotted fields at the

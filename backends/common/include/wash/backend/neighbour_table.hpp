@@ -1,0 +1,69 @@
+//===- wash/backend/neighbour_table.hpp - lists kept for one search -*- C++ -*-===//
+//
+// Under the smoothing-length rule a neighbour list is sorted by id, which
+// costs as much as finding it. The force kernels of one search (the translator
+// groups kernels with no write to pos or smoothing_length between them) see
+// the same lists, so the search builds every particle's list once and keeps
+// them: each thread fills its own buffer for a contiguous share of the
+// particles. Memory: the lists (4 bytes a neighbour) and two pointers a row.
+// Under the influence-radius rule lists are rebuilt per kernel instead, from
+// the cell order at no sorting cost, and nothing is kept.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/neighbours.hpp>
+#include <wash/backend/search_geometry.hpp>
+
+#include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace wash::backend {
+
+template <int D, typename PosT> class NeighbourTable {
+public:
+  /// The lists of the particles at `rows`, in ascending id order.
+  template <typename RealT>
+  void build(const CellGrid<D> &grid, const Column<PosT> &pos, const Column<std::uint64_t> &ids,
+             const Column<RealT> &h, const SearchGeometry &g, const std::vector<Index> &rows) {
+    const std::size_t n = rows.size();
+#ifdef _OPENMP
+    const int shares = omp_get_max_threads();
+#else
+    const int shares = 1;
+#endif
+    buffers_.resize(std::size_t(shares));
+    begin_.assign(pos.size(), nullptr);
+    end_.assign(pos.size(), nullptr);
+    offset_.resize(n);
+#pragma omp parallel for schedule(static, 1)
+    for (int s = 0; s < shares; ++s) {
+      const std::size_t from = n * std::size_t(s) / std::size_t(shares),
+                        to = n * std::size_t(s + 1) / std::size_t(shares);
+      std::vector<NeighbourRef> &buffer = buffers_[std::size_t(s)];
+      buffer.clear();
+      for (std::size_t k = from; k < to; ++k) {
+        const Index i = rows[k];
+        Neighbours<D, PosT> list(grid, pos, i, ids, g.radiusOf(double(h[i])));
+        offset_[k] = buffer.size();
+        buffer.insert(buffer.end(), list.begin(), list.end());
+      }
+      for (std::size_t k = from; k < to; ++k) { // the buffer has stopped moving
+        begin_[rows[k]] = buffer.data() + offset_[k];
+        end_[rows[k]] = buffer.data() + (k + 1 < to ? offset_[k + 1] : buffer.size());
+      }
+    }
+  }
+
+  /// The neighbours of the particle at row i (one of the rows built).
+  Neighbours<D, PosT> list(Index i) const { return Neighbours<D, PosT>(begin_[i], end_[i]); }
+
+private:
+  std::vector<std::vector<NeighbourRef>> buffers_;
+  std::vector<const NeighbourRef *> begin_, end_;
+  std::vector<std::size_t> offset_;
+};
+
+} // namespace wash::backend
