@@ -23,31 +23,46 @@ constexpr double adiabaticIndex = 5.0 / 3.0;
 constexpr double blastEnergy = 1.0;
 constexpr double rho0 = 1.0;
 constexpr double ambientEnergy = 1e-8; // specific internal energy of the cold gas
-constexpr double depositWidth = 2.0;   // Gaussian width of the deposit, in initial h
+constexpr double depositWidth = 0.1;   // the deposit is exp(-r^2 / w^2), w as in SPH-EXA
 constexpr double endTime = 0.05;
-constexpr double hFactor = 1.44;      // h = hFactor (m / rho)^(1/3): about 100 neighbours in 2h
+constexpr double hFactor = 1.3;      // h = hFactor (m / rho)^(1/3): about 100 neighbours in 2h
 constexpr double searchSupport = 2.5; // neighbours within 2.5 h_i: also those whose 2h_j reaches i
 constexpr double hMaxFactor = 2.0;    // h stays within [h0 / hMaxFactor, hMaxFactor h0]
 constexpr double courant = 0.3;
 constexpr double alphaAV = 1.0; // Monaghan (1992) viscosity
 constexpr double betaAV = 1.0;
-constexpr double selfCorrection = 0.0294; // Dehnen & Aly (2012) density bias of Wendland C2 at 100 neighbours
+constexpr double selfCorrection = 0.0294*1.36; // Dehnen & Aly (2012) density bias of Wendland C2 at 100 neighbours
 constexpr bool useBalsara = true;
+constexpr double alphaConductivity = 0.3; // Price (2008) artificial conductivity
+constexpr bool conductOnlyReceding = true;
+constexpr bool predictH = false;
+constexpr bool useIAD = false;
 constexpr wash::Vec3D centre{0.5, 0.5, 0.5};
 
-// Wendland C2 in 3D with support 2h (Dehnen & Aly 2012), q = r / h.
+constexpr int kernelChoice = 0; // 0 Wendland C2, 1 sinc^6
+
 double W(double r, double h) {
     double q = r / h;
     if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q;
-    return 21.0 / (16.0 * PI * h * h * h) * s * s * s * s * (1.0 + 2.0 * q);
+    if (kernelChoice == 0) {
+        double s = 1.0 - 0.5 * q;
+        return 21.0 / (16.0 * PI * h * h * h) * s * s * s * s * (1.0 + 2.0 * q);
+    }
+    double x = 0.5 * q, s = x > 0.0 ? std::sin(PI * x) / (PI * x) : 1.0;
+    return 0.7904495894323025 / (h * h * h) * s * s * s * s * s * s;
 }
 
 double dW(double r, double h) { // dW/dr
     double q = r / h;
     if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q;
-    return -21.0 / (16.0 * PI * h * h * h * h) * 5.0 * q * s * s * s;
+    if (kernelChoice == 0) {
+        double s = 1.0 - 0.5 * q;
+        return -21.0 / (16.0 * PI * h * h * h * h) * 5.0 * q * s * s * s;
+    }
+    double x = 0.5 * q;
+    if (x <= 0.0) return 0.0;
+    double s = std::sin(PI * x) / (PI * x), ds = (std::cos(PI * x) - s) / x;
+    return 0.7904495894323025 / (h * h * h * h) * 3.0 * s * s * s * s * s * ds;
 }
 
 wash::Vec3D cross(const wash::Vec3D& a, const wash::Vec3D& b) {
@@ -64,7 +79,7 @@ double initialSmoothingLength() { return hFactor / wash::get_variable("side"); }
 void Spawn() {
     const int n = int(wash::get_variable("side"));
     const double dx = 1.0 / n, mass = rho0 * dx * dx * dx, h = initialSmoothingLength();
-    const double width = depositWidth * h;
+    const double width = depositWidth;
     double weights = 0.0;
     for (int k = 0; k < n; k++)
         for (int j = 0; j < n; j++)
@@ -91,6 +106,7 @@ void KickDrift(wash::Particle& p) {
     wash::Vec3D velHalf = p.get_vel() + p.get_acc() * (0.5 * dt);
     double energyHalf = p.get_force_scalar("energy") + p.get_force_scalar("energy_rate") * (0.5 * dt);
     p.set_pos(p.get_pos() + velHalf * dt);
+    if (predictH) p.set_smoothing_length(p.get_smoothing_length() * std::exp(-p.get_force_scalar("div_v") * dt / 3.0));
     p.set_force_vector("vel_half", velHalf);
     p.set_force_scalar("energy_half", energyHalf);
     p.set_vel(velHalf + p.get_acc() * (0.5 * dt));
@@ -118,9 +134,38 @@ void Density(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
     div /= rho;
     const double curlMagnitude = curl.magnitude() / rho;
     p.set_density(rho);
+    p.set_force_scalar("div_v", div);
     p.set_force_scalar("pressure", (adiabaticIndex - 1.0) * rho * energy);
     p.set_force_scalar("balsara",
                        std::abs(div) / (std::abs(div) + curlMagnitude + 1e-4 * c / h));
+}
+
+// Integral approach to derivatives (Garcia-Senz et al. 2012): C_i, the inverse
+// of tau_i = sum_j V_j (x_j - x_i)(x_j - x_i)^T W_ij(h_i), V_j = m_j / rho_j.
+void Gradients(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
+    const double h = p.get_smoothing_length();
+    const wash::Vec3D pos = p.get_pos();
+    double xx = 0.0, yy = 0.0, zz = 0.0, xy = 0.0, xz = 0.0, yz = 0.0;
+    for (const auto& n : neighbours) {
+        wash::Vec3D d = n.get_pos() - pos;
+        double r = d.magnitude();
+        if (r >= 2.0 * h) continue;
+        double w = n.get_mass() / n.get_density() * W(r, h);
+        double dx = d.at(0), dy = d.at(1), dz = d.at(2);
+        xx += dx * dx * w; yy += dy * dy * w; zz += dz * dz * w;
+        xy += dx * dy * w; xz += dx * dz * w; yz += dy * dz * w;
+    }
+    double det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+    p.set_force_vector("iad_diag", wash::Vec3D{(yy * zz - yz * yz) / det, (xx * zz - xz * xz) / det,
+                                               (xx * yy - xy * xy) / det});
+    p.set_force_vector("iad_off", wash::Vec3D{(xz * yz - xy * zz) / det, (xy * xz - yz * xx) / det,
+                                              (xy * yz - xz * yy) / det});
+}
+
+wash::Vec3D applyIAD(const wash::Vec3D& diag, const wash::Vec3D& off, const wash::Vec3D& v) {
+    return wash::Vec3D{diag.at(0) * v.at(0) + off.at(0) * v.at(1) + off.at(1) * v.at(2),
+                       off.at(0) * v.at(0) + diag.at(1) * v.at(1) + off.at(2) * v.at(2),
+                       off.at(1) * v.at(0) + off.at(2) * v.at(1) + diag.at(2) * v.at(2)};
 }
 
 // Pressure and viscous accelerations, du/dt, and the particle's time step.
@@ -135,10 +180,15 @@ void Forces(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
         wash::Vec3D d = pos - n.get_pos();
         double r = d.magnitude();
         const double hj = n.get_smoothing_length();
-        if (r <= 0.0 || (r >= 2.0 * hi && r >= 2.0 * hj)) continue;
+        // a pair interacts only if each particle is in the other's search
+        // sphere, so that both see the same pair forces (and conserve energy)
+        if (r <= 0.0 || d.dot(d) > (searchSupport * hj) * (searchSupport * hj)) continue;
         const double rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
         const double cj = std::sqrt(adiabaticIndex * Pj / rhoj);
         wash::Vec3D gradW = d * (0.5 * (dW(r, hi) + dW(r, hj)) / r);
+        if (useIAD)
+            gradW = (applyIAD(p.get_force_vector("iad_diag"), p.get_force_vector("iad_off"), -d) * W(r, hi) +
+                     applyIAD(n.get_force_vector("iad_diag"), n.get_force_vector("iad_off"), -d) * W(r, hj)) * 0.5;
         wash::Vec3D dv = vel - n.get_vel();
         double vr = dv.dot(d), viscosity = 0.0;
         if (vr < 0.0) {
@@ -153,6 +203,12 @@ void Forces(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
         const double m = n.get_mass();
         acc -= gradW * (m * (Pi / (rhoi * rhoi) + Pj / (rhoj * rhoj) + viscosity));
         energyRate += m * (Pi / (rhoi * rhoi) + 0.5 * viscosity) * dv.dot(gradW);
+        // conduction: u flows down its gradient at speed sqrt(|dP| / rho)
+        double rhoij = 0.5 * (rhoi + rhoj);
+        double ui = Pi / ((adiabaticIndex - 1.0) * rhoi), uj = Pj / ((adiabaticIndex - 1.0) * rhoj);
+        if (!conductOnlyReceding || vr >= 0.0)
+        energyRate += m * alphaConductivity * std::sqrt(std::abs(Pi - Pj) / rhoij) * (ui - uj) / rhoij *
+                      0.5 * (dW(r, hi) + dW(r, hj));
     }
     p.set_acc(acc);
     p.set_force_scalar("energy_rate", energyRate);
@@ -207,6 +263,7 @@ int main(int argc, char** argv) {
     wash::add_init_kernel(&Spawn);
     wash::add_update_kernel(&KickDrift);
     wash::add_force_kernel(&Density);
+    if (useIAD) wash::add_force_kernel(&Gradients);
     wash::add_force_kernel(&Forces);
     wash::add_update_kernel(&Kick);
     wash::add_reduction_kernel(&TimeStep, wash::Reduction::Min, "next_dt");
