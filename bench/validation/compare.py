@@ -2,7 +2,7 @@
 """Compare a wash particle dump with the Sedov or Noh exact solution.
 
     compare.py STATE.csv --problem sedov|noh --time T [--center X Y Z] [--box L]
-               [--plot OUT.png] [--label TEXT]
+               [--rmax R] [--plot OUT.png] [--label TEXT]
 
 STATE.csv is a wash `--dump` file (header row, one row per particle) with at
 least the columns x, y, z, vx, vy, vz, density and pressure (or p); mass is
@@ -266,6 +266,8 @@ def main(argv=None):
     ap.add_argument("--rho0", type=float, default=1.0, help="ambient density")
     ap.add_argument("--u0", type=float, default=1.0, help="Noh inflow speed")
     ap.add_argument("--bin-width", type=float, help="radial bin width (default: see doc)")
+    ap.add_argument("--rmax", type=float,
+                    help="score only the particles with r < RMAX (e.g. away from a free edge)")
     args = ap.parse_args(argv)
     if not args.time > 0:
         ap.error("--time must be > 0")
@@ -280,6 +282,10 @@ def main(argv=None):
     except (InputError, OSError, ValueError) as exc:
         print("compare.py: error: %s" % exc, file=sys.stderr)
         return 2
+    if args.rmax is not None:
+        inside = radial(state, center, args.box)[0] < args.rmax
+        state = {k: (v[inside] if hasattr(v, "shape") and v.shape[:1] == inside.shape else v)
+                 for k, v in state.items()}
     m, arrays = evaluate(state, problem, center, args.box, args.bin_width)
     print("%s at t=%g, centre (%g, %g, %g)%s, %d particles, bin width %.4g"
           % (args.problem, args.time, center[0], center[1], center[2],
