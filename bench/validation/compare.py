@@ -284,8 +284,7 @@ def main(argv=None):
         return 2
     if args.rmax is not None:
         inside = radial(state, center, args.box)[0] < args.rmax
-        state = {k: (v[inside] if hasattr(v, "shape") and v.shape[:1] == inside.shape else v)
-                 for k, v in state.items()}
+        state = {name: column[inside] for name, column in state.items()}
     m, arrays = evaluate(state, problem, center, args.box, args.bin_width)
     print("%s at t=%g, centre (%g, %g, %g)%s, %d particles, bin width %.4g"
           % (args.problem, args.time, center[0], center[1], center[2],

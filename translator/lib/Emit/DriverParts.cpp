@@ -97,6 +97,20 @@ std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std:
          K.Function + "\"" + (GlobalMax.empty() ? "" : ", " + GlobalMax) + ")";
 }
 
+std::string neighbourTableDeclaration(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "";
+  return "wash::backend::NeighbourTable<" + std::to_string(Plan.Dim) +
+         ", Stored> table; // the lists of the current search\n";
+}
+
+std::string neighbourTableBuild(const CodePlan &Plan, const std::string &Rows) {
+  if (!Plan.SmoothingSearch)
+    return "";
+  return "  table.build(grid, P.pos, P.id, " + Plan.readColumn("smoothing_length") + ", at, " +
+         Rows + ");\n";
+}
+
 std::string neighbourListText(const CodePlan &Plan) {
   if (!Plan.SmoothingSearch)
     return "NeighbourList(grid, P.pos, i)";

@@ -56,10 +56,7 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "std::vector<Index> order;\n"
      << "wash::mpi::Domain<" << Plan.Dim << "> domain;\n"
      << "wash::mpi::HaloPlan halo;\n"
-     << "wash::backend::SearchGeometry geometry; // of the current search\n"
-     << (Plan.SmoothingSearch ? "wash::backend::NeighbourTable<" + std::to_string(Plan.Dim) +
-                                    ", Stored> table; // its lists\n"
-                              : std::string())
+     << neighbourTableDeclaration(Plan)
      << "\n"
      << "/// A neighbour search: particles to their owners, images across periodic\n"
      << "/// faces, a new halo carrying the columns `fields` visits, then everything\n"
@@ -67,16 +64,13 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "template <typename Fields>\n"
      << "void search(const wash::backend::SearchGeometry &at, const wash::detail::Box &box,\n"
      << "            Fields fields) {\n"
-     << "  geometry = at;\n"
      << "  wash::mpi::redistribute(P, domain, halo);\n"
      << "  wash::backend::addImages<" << Plan.Dim << ">(P, halo.owned, box, at.reach, halo);\n"
      << "  wash::mpi::buildHalo(P, domain, at.reach, halo, fields);\n"
      << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
      << "  halo.permuted(order);\n"
-     << (Plan.SmoothingSearch ? "  table.build(grid, P.pos, P.id, " +
-                                    Plan.readColumn("smoothing_length") + ", at, halo.owned);\n"
-                              : std::string())
+     << neighbourTableBuild(Plan, "halo.owned")
      << "}\n\n"
      << "/// This rank's particles, gathered on rank 0 (collective).\n"
      << "wash::detail::Frame frame() {\n"

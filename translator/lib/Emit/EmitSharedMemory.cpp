@@ -129,24 +129,17 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << "wash::backend::CellGrid<" << Plan.Dim << "> grid;\n"
      << "std::vector<Index> order;\n"
      << "wash::backend::Images images; // real particles, and periodic images\n"
-     << "wash::backend::SearchGeometry geometry; // of the current search\n"
-     << (Plan.SmoothingSearch ? "wash::backend::NeighbourTable<" + std::to_string(Plan.Dim) +
-                                    ", Stored> table; // its lists\n"
-                              : std::string())
+     << neighbourTableDeclaration(Plan)
      << "\n"
      << "/// A neighbour search: images across periodic faces, then particles sorted\n"
      << "/// by (cell, id), see docs/semantics.md.\n"
      << "void search(const wash::backend::SearchGeometry &at, const wash::detail::Box &box) {\n"
-     << "  geometry = at;\n"
      << "  wash::backend::dropImages(P, images);\n"
      << "  wash::backend::addImages<" << Plan.Dim << ">(P, images.owned, box, at.reach, images);\n"
      << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
-     << "  images.permuted(order);\n";
-  if (Plan.SmoothingSearch)
-    OS << "  table.build(grid, P.pos, P.id, " << Plan.readColumn("smoothing_length")
-       << ", at, images.owned);\n";
-  OS << "}\n\n";
+     << "  images.permuted(order);\n"
+     << neighbourTableBuild(Plan, "images.owned") << "}\n\n";
   OS << "wash::detail::Frame frame() {\n"
      << "  wash::backend::FrameBuilder f(" << Plan.Dim << ", P.id, &images.owned);\n";
   emitFrameColumns(OS, Plan);

@@ -84,11 +84,8 @@ public:
   }
 
   /// Candidate ranges for a particle at p: the cells overlapping [p - r, p + r]
-  /// on each axis, in canonical order (the reference's cell set exactly).
-  void candidates(const Vec<double, D> &p, CandidateRanges &out) const {
-    candidates(p, radius_, out);
-  }
-  /// The same for a search radius r of at most 4 cells.
+  /// on each axis, in canonical order (the reference's cell set exactly), for a
+  /// search radius r of at most 4 cells.
   void candidates(const Vec<double, D> &p, double r, CandidateRanges &out) const {
     std::array<std::int64_t, D> from, to;
     for (int a = 0; a < D; ++a) {

@@ -37,10 +37,53 @@ struct NeighbourRef {
 template <int D, typename PosT> class Neighbours {
 public:
   Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self) {
+    scan(grid, pos, self, grid.radius());
+  }
+
+  /// The smoothing-length rule: the other particles within `radius` of
+  /// particle `self`, in ascending id order.
+  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
+             const Column<std::uint64_t> &ids, double radius) {
+    scan(grid, pos, self, radius);
+    const std::size_t kept = size();
+    std::vector<std::uint64_t> &keys = threadKeys();
+    if (keys.size() < kept)
+      keys.resize(kept);
+    for (std::size_t k = 0; k < kept; ++k) // ids and rows below 2^32: the order is the id's
+      keys[k] = ids[begin_[k].index] << 32 | begin_[k].index;
+    std::sort(keys.begin(), keys.begin() + std::ptrdiff_t(kept));
+    NeighbourRef *out = threadBuffer().data();
+    for (std::size_t k = 0; k < kept; ++k)
+      out[k].index = Index(keys[k] & 0xffffffffu);
+  }
+
+  /// A list kept elsewhere (NeighbourTable).
+  Neighbours(const NeighbourRef *begin, const NeighbourRef *end) : begin_(begin), end_(end) {}
+
+  const NeighbourRef *begin() const { return begin_; }
+  const NeighbourRef *end() const { return end_; }
+  std::size_t size() const { return std::size_t(end_ - begin_); }
+  bool empty() const { return begin_ == end_; }
+  const NeighbourRef &operator[](std::size_t k) const { return begin_[k]; }
+  const NeighbourRef &at(std::size_t k) const {
+    if (k >= size())
+      throw std::out_of_range("wash: neighbour index out of range");
+    return begin_[k];
+  }
+  const NeighbourRef &front() const { return *begin_; }
+  const NeighbourRef &back() const { return end_[-1]; }
+  const NeighbourRef *cbegin() const { return begin_; }
+  const NeighbourRef *cend() const { return end_; }
+
+private:
+  /// Fills the per-thread buffer with the other particles within `radius` of
+  /// particle `self`, in the grid's candidate order, without branches: every
+  /// candidate is written and kept (the count advanced) if it passes.
+  void scan(const CellGrid<D> &grid, const Column<PosT> &pos, Index self, double radius) {
     const Vec<double, D> centre(pos[self]);
-    const double r2 = grid.radius() * grid.radius();
+    const double r2 = radius * radius;
     CandidateRanges ranges;
-    grid.candidates(centre, ranges);
+    grid.candidates(centre, radius, ranges);
     std::size_t candidates = 0;
     for (int r = 0; r < ranges.count; ++r)
       candidates += ranges.end[r] - ranges.begin[r];
@@ -64,61 +107,6 @@ public:
     end_ = out + kept;
   }
 
-  /// The smoothing-length rule: the other particles within `radius` of
-  /// particle `self`, in ascending id order.
-  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
-             const Column<std::uint64_t> &ids, double radius) {
-    const Vec<double, D> centre(pos[self]);
-    const double r2 = radius * radius;
-    CandidateRanges ranges;
-    grid.candidates(centre, radius, ranges);
-    std::size_t candidates = 0;
-    for (int r = 0; r < ranges.count; ++r)
-      candidates += ranges.end[r] - ranges.begin[r];
-    std::vector<std::uint64_t> &keys = threadKeys();
-    if (keys.size() < candidates)
-      keys.resize(candidates);
-    std::size_t kept = 0;
-    const PosT *p = pos.data();
-    for (int r = 0; r < ranges.count; ++r)
-      for (Index j = ranges.begin[r]; j < ranges.end[r]; ++j) {
-        double d2 = 0.0;
-        for (int a = 0; a < D; ++a) {
-          double d = double(p[j].at(a)) - centre.at(a);
-          d2 += d * d;
-        }
-        keys[kept] = ids[j] << 32 | j; // ids and rows below 2^32: the order is the id's
-        kept += (j != self) & (d2 <= r2);
-      }
-    std::sort(keys.begin(), keys.begin() + std::ptrdiff_t(kept));
-    std::vector<NeighbourRef> &buffer = threadBuffer();
-    if (buffer.size() < kept)
-      buffer.resize(kept);
-    for (std::size_t k = 0; k < kept; ++k)
-      buffer[k].index = Index(keys[k] & 0xffffffffu);
-    begin_ = buffer.data();
-    end_ = begin_ + kept;
-  }
-
-  /// A list kept elsewhere (NeighbourTable).
-  Neighbours(const NeighbourRef *begin, const NeighbourRef *end) : begin_(begin), end_(end) {}
-
-  const NeighbourRef *begin() const { return begin_; }
-  const NeighbourRef *end() const { return end_; }
-  std::size_t size() const { return std::size_t(end_ - begin_); }
-  bool empty() const { return begin_ == end_; }
-  const NeighbourRef &operator[](std::size_t k) const { return begin_[k]; }
-  const NeighbourRef &at(std::size_t k) const {
-    if (k >= size())
-      throw std::out_of_range("wash: neighbour index out of range");
-    return begin_[k];
-  }
-  const NeighbourRef &front() const { return *begin_; }
-  const NeighbourRef &back() const { return end_[-1]; }
-  const NeighbourRef *cbegin() const { return begin_; }
-  const NeighbourRef *cend() const { return end_; }
-
-private:
   static std::vector<NeighbourRef> &threadBuffer() {
     thread_local std::vector<NeighbourRef> buffer;
     return buffer;

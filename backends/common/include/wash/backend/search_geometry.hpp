@@ -34,12 +34,12 @@ struct SearchGeometry {
 inline SearchGeometry fixedGeometry(double radius) { return {radius, radius, 0.0}; }
 
 /// The geometry for the smoothing-length rule over the particles at `rows`.
-/// `globalMax` combines a rank's largest radius with the other ranks'.
-template <typename RealT, typename GlobalMax>
+/// `globalMax`, if given, combines a rank's largest radius with the other ranks'.
+template <typename RealT>
 SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
                                  const Column<std::uint64_t> &ids, const std::vector<Index> &rows,
                                  const detail::Box &box, int dims, std::uint64_t step,
-                                 const char *kernel, GlobalMax globalMax) {
+                                 const char *kernel, double (*globalMax)(double) = nullptr) {
   const std::string where = "step " + std::to_string(step) + ": kernel '" + kernel + "': ";
   double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
   for (Index p : rows) {
@@ -49,7 +49,8 @@ SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
     largest = std::max(largest, r);
     smallest = std::min(smallest, r);
   }
-  largest = globalMax(largest);
+  if (globalMax)
+    largest = globalMax(largest);
   if (rows.empty())
     smallest = largest;
   if (std::string bad = detail::checkPeriodicSupport(box, dims, largest); !bad.empty())
@@ -63,15 +64,6 @@ SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
   if (!(g.cellSize > 0.0))
     g.cellSize = 1.0; // all radii 0: any cell size finds coincident particles
   return g;
-}
-
-template <typename RealT>
-SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
-                                 const Column<std::uint64_t> &ids, const std::vector<Index> &rows,
-                                 const detail::Box &box, int dims, std::uint64_t step,
-                                 const char *kernel) {
-  return smoothingGeometry(support, h, ids, rows, box, dims, step, kernel,
-                           [](double v) { return v; });
 }
 
 } // namespace wash::backend

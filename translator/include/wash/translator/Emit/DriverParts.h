@@ -49,6 +49,12 @@ std::string kernelComment(const Model &M, unsigned K);
 std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std::string &Rows,
                                const std::string &GlobalMax);
 
+/// Under the smoothing-length rule the search keeps every list in `table`:
+/// its declaration, and the line of `search` that builds it for `Rows`
+/// (both empty under the influence-radius rule).
+std::string neighbourTableDeclaration(const CodePlan &Plan);
+std::string neighbourTableBuild(const CodePlan &Plan, const std::string &Rows);
+
 /// The neighbour list of particle `i`: built now, or kept by the search's
 /// `table` (smoothing-length rule).
 std::string neighbourListText(const CodePlan &Plan);
