@@ -93,18 +93,33 @@ private:
     NeighbourRef *out = buffer.data();
     std::size_t kept = 0;
     const PosT *p = pos.data();
-    for (int r = 0; r < ranges.count; ++r)
-      for (Index j = ranges.begin[r]; j < ranges.end[r]; ++j) {
-        double d2 = 0.0;
-        for (int a = 0; a < D; ++a) {
-          double d = double(p[j].at(a)) - centre.at(a);
-          d2 += d * d;
-        }
-        out[kept].index = j;
-        kept += (j != self) & (d2 <= r2);
+    for (int r = 0; r < ranges.count; ++r) {
+      const Index b = ranges.begin[r], e = ranges.end[r];
+      if (b <= self && self < e) { // skip the particle itself by splitting its row
+        kept = keep(p, centre, r2, b, self, out, kept);
+        kept = keep(p, centre, r2, self + 1, e, out, kept);
+      } else {
+        kept = keep(p, centre, r2, b, e, out, kept);
       }
+    }
     begin_ = out;
     end_ = out + kept;
+  }
+
+  /// Appends the candidates [b, e) within sqrt(r2) of centre to out[kept..].
+  static std::size_t keep(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
+                          Index b, Index e, NeighbourRef *__restrict out, std::size_t kept) {
+    for (Index j = b; j < e; ++j) {
+      double d = double(p[j].at(0)) - centre.at(0);
+      double d2 = d * d; // the reference's 0 + d*d: exact, d*d is never -0
+      for (int a = 1; a < D; ++a) {
+        d = double(p[j].at(a)) - centre.at(a);
+        d2 += d * d;
+      }
+      out[kept].index = j;
+      kept += d2 <= r2;
+    }
+    return kept;
   }
 
   static std::vector<NeighbourRef> &threadBuffer() {
