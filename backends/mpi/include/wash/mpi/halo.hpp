@@ -193,41 +193,90 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
   const int n = ranks(), me = rank();
   const std::size_t owned = P.size(); // senders: owned particles and images
   using Cell = typename Domain<D>::Cell;
-  // Owners of the cells around this rank's particles, computed once per cell.
-  Cell lo, hi, c;
-  lo.fill(std::numeric_limits<std::int64_t>::max());
-  hi.fill(std::numeric_limits<std::int64_t>::min());
-  std::vector<Cell> from(owned), to(owned);
-  for (Index i = 0; i < owned; ++i) {
-    Vec<double, D> p(P.pos[i]);
+  const double cellSize = domain.cellSize();
+  // The cells the box [p - radius, p + radius] overlaps, [from, to] per axis.
+  auto stencil = [&](const Vec<double, D> &p, Cell &from, Cell &to) {
     for (int a = 0; a < D; ++a) {
-      from[i][a] = static_cast<std::int64_t>(std::floor((p.at(a) - radius) / domain.cellSize()));
-      to[i][a] = static_cast<std::int64_t>(std::floor((p.at(a) + radius) / domain.cellSize()));
-      lo[a] = std::min(lo[a], from[i][a]);
-      hi[a] = std::max(hi[a], to[i][a]);
+      from[a] = static_cast<std::int64_t>(std::floor((p.at(a) - radius) / cellSize));
+      to[a] = static_cast<std::int64_t>(std::floor((p.at(a) + radius) / cellSize));
+    }
+  };
+  // Every stencil lies in [lo, hi]: the stencil's bounds are monotone in p,
+  // so those of the lowest and highest coordinates bound them all.
+  Vec<double, D> low, high;
+  for (int a = 0; a < D; ++a) {
+    *low[a] = std::numeric_limits<double>::infinity();
+    *high[a] = -std::numeric_limits<double>::infinity();
+  }
+  for (Index i = 0; i < owned; ++i) {
+    const Vec<double, D> p(P.pos[i]);
+    for (int a = 0; a < D; ++a) {
+      *low[a] = std::min(low.at(a), p.at(a));
+      *high[a] = std::max(high.at(a), p.at(a));
     }
   }
+  Cell lo, hi, from, to, c;
+  stencil(low, lo, to);
+  stencil(high, from, hi);
+  // Owners of the cells around this rank's particles, computed once per cell
+  // when they span few enough cells.
   std::size_t cells = 1;
   for (int a = 0; a < D && owned; ++a)
     cells *= std::size_t(hi[a] - lo[a] + 1);
   const bool dense = owned > 0 && cells <= 8 * owned + 64;
+  auto denseIndex = [&](const Cell &cell) {
+    std::size_t index = 0;
+    for (int a = D - 1; a >= 0; --a)
+      index = index * std::size_t(hi[a] - lo[a] + 1) + std::size_t(cell[a] - lo[a]);
+    return index;
+  };
   std::vector<int> ownerCache(dense ? cells : 0, -1);
   auto ownerOf = [&](const Cell &cell) {
     if (!dense)
       return domain.ownerOf(domain.keyOf(cell));
-    std::size_t index = 0;
-    for (int a = D - 1; a >= 0; --a)
-      index = index * std::size_t(hi[a] - lo[a] + 1) + std::size_t(cell[a] - lo[a]);
-    int &owner = ownerCache[index];
+    int &owner = ownerCache[denseIndex(cell)];
     if (owner < 0)
       owner = domain.ownerOf(domain.keyOf(cell));
     return owner;
   };
+  // A particle's stencil lies within `reach` cells of its own cell (one more
+  // than the radius needs, for rounding). If this rank owns all of those
+  // cells, the particle is sent nowhere: decided once per cell, so interior
+  // particles skip the walk below.
+  const std::int64_t reach = static_cast<std::int64_t>(std::ceil(radius / cellSize)) + 1;
+  std::vector<signed char> interiorCache(dense ? cells : 0, -1);
+  auto interior = [&](const Cell &own) {
+    signed char &known = interiorCache[denseIndex(own)];
+    if (known >= 0)
+      return known == 1;
+    Cell first, last;
+    for (int a = 0; a < D; ++a) {
+      first[a] = std::max(lo[a], own[a] - reach);
+      last[a] = std::min(hi[a], own[a] + reach);
+    }
+    Cell x = first;
+    known = 1;
+    while (known == 1) {
+      if (ownerOf(x) != me)
+        known = 0;
+      int a = 0;
+      while (a < D && x[a] == last[a])
+        x[a] = first[a], ++a;
+      if (a == D)
+        break;
+      ++x[a];
+    }
+    return known == 1;
+  };
   std::vector<std::vector<Index>> send(n);
   std::vector<int> seen;
   for (Index i = 0; i < owned; ++i) {
+    const Vec<double, D> p(P.pos[i]);
+    if (dense && interior(domain.cellOf(p)))
+      continue;
+    stencil(p, from, to);
     seen.assign(1, me);
-    c = from[i];
+    c = from;
     while (true) {
       int owner = ownerOf(c);
       if (std::find(seen.begin(), seen.end(), owner) == seen.end()) {
@@ -235,8 +284,8 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
         send[owner].push_back(i);
       }
       int a = 0;
-      while (a < D && c[a] == to[i][a])
-        c[a] = from[i][a], ++a;
+      while (a < D && c[a] == to[a])
+        c[a] = from[a], ++a;
       if (a == D)
         break;
       ++c[a];
