@@ -76,11 +76,15 @@ void Run::finish(const detail::Frame &finalFrame) {
   if (!output_)
     return;
   output_->finish(finalFrame);
-  if (!programOptions().quiet)
-    std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); output in %s\n",
-                (unsigned long long)steps_, finalFrame.size(), seconds,
-                seconds > 0 ? double(steps_) * double(finalFrame.size()) / seconds : 0.0,
-                output_->directory().c_str());
+  if (programOptions().quiet)
+    return;
+  const double particleSteps = double(steps_) * double(finalFrame.size());
+  std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); "
+              "steps alone %.3f s, %.1f ns per particle-step; output in %s\n",
+              (unsigned long long)steps_, finalFrame.size(), seconds,
+              seconds > 0 ? particleSteps / seconds : 0.0, stepSeconds_,
+              particleSteps > 0 ? stepSeconds_ * 1e9 / particleSteps : 0.0,
+              output_->directory().c_str());
 }
 
 void Run::failWith(std::uint64_t step, const char *kernel, const char *field, std::uint64_t id,

@@ -16,6 +16,7 @@
 #include <wash/detail/search.hpp>
 #include <wash/vec.hpp>
 
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -61,15 +62,18 @@ public:
     started(particles);
     if (frameDue(0))
       write(0, frame());
+    stepStart_ = Clock::now();
   }
   /// After every kernel of a step.
   template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
+    stepSeconds_ += std::chrono::duration<double>(Clock::now() - stepStart_).count();
     if (settings().stopRequested)
       steps_ = step; // wash::stop(): this step is the last, and written as such
     if (frameDue(step))
       write(step, frame());
     if (progress_)
       progress_->update(step);
+    stepStart_ = Clock::now();
   }
   void finish(const detail::Frame &finalFrame);
   /// Prints one more line of the end-of-run summary (writing run, not --quiet).
@@ -126,6 +130,11 @@ private:
   double radius_ = 0.0;
   std::unique_ptr<detail::RunOutput> output_;
   std::unique_ptr<detail::Progress> progress_;
+  // The steps' own time, frames written excluded: what the summary reports
+  // per particle-step (benchmarks read it; start-up and output vary a lot).
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point stepStart_;
+  double stepSeconds_ = 0.0;
 };
 
 } // namespace wash::backend
