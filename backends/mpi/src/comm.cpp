@@ -94,6 +94,11 @@ double allreduceMax(double v) {
   MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   return out;
 }
+double allreduceSum(double v) {
+  double out = 0;
+  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return out;
+}
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &l) { return gatherAll(l); }
 std::vector<double> allgatherv(const std::vector<double> &l) { return gatherAll(l); }
 

@@ -29,6 +29,7 @@ std::uint64_t allreduceSum(std::uint64_t v);
 std::uint64_t allreduceMax(std::uint64_t v);
 std::uint64_t allreduceMin(std::uint64_t v);
 double allreduceMax(double v);
+double allreduceSum(double v);
 /// Every rank's `local`, concatenated in rank order, on every rank.
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &local);
 std::vector<double> allgatherv(const std::vector<double> &local);

@@ -3,8 +3,8 @@
 // Space is cut along a Z-order (Morton) curve over the cells of the canonical
 // grid (cell size = influence radius): each rank owns a contiguous range of
 // cell keys, so a cell and all its particles belong to one rank. The ranges
-// are chosen to balance particle counts and recomputed when the imbalance
-// grows past a threshold.
+// start with equal particle counts; later they are recomputed to balance the
+// work measured on each rank, when its imbalance grows past a threshold.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -61,6 +61,9 @@ public:
     return int(std::upper_bound(splitters_.begin(), splitters_.end(), key) - splitters_.begin());
   }
 
+  /// Searches since the splitters were last set (redistribute counts them).
+  int &searchesSinceBalance() { return searches_; }
+
   /// Splitters from every key, known on every rank (the initial state).
   void balanceExactly(std::vector<std::uint64_t> keys) {
     std::sort(keys.begin(), keys.end());
@@ -69,15 +72,35 @@ public:
       splitters_.push_back(keys.empty() ? 0 : keys[keys.size() * r / ranks()]);
   }
 
-  /// Splitters from a weighted sample of every rank's keys (collective).
-  void balance(std::vector<std::uint64_t> localKeys) {
+  /// Splitters from a weighted sample of every rank's keys (collective), so
+  /// that every rank gets about the same work. `work` is this rank's measured
+  /// work (busySeconds); within a rank, a particle's share of it grows with the
+  /// particles sharing its cell (its neighbours grow with them: water at a
+  /// free surface costs less than water at depth).
+  void balance(std::vector<std::uint64_t> localKeys, double work) {
+    searches_ = 0;
     std::sort(localKeys.begin(), localKeys.end());
     const std::size_t n = localKeys.size(), samples = std::min<std::size_t>(n, 1024);
+    // ahead[k]: the cell-share weight of the particles before k in key order.
+    std::vector<double> ahead(n);
+    double sum = 0.0;
+    for (std::size_t k = 0; k < n;) {
+      std::size_t end = k;
+      while (end < n && localKeys[end] == localKeys[k])
+        ++end;
+      const double share = double(end - k);
+      for (std::size_t j = k; j < end; ++j, sum += share)
+        ahead[j] = sum;
+      k = end;
+    }
     std::vector<std::uint64_t> sample;
     std::vector<double> weight;
-    for (std::size_t k = 0; k < samples; ++k) {
-      sample.push_back(localKeys[k * n / samples]);
-      weight.push_back(double(n) / double(samples));
+    for (std::size_t s = 0; s < samples; ++s) {
+      const double target = sum * double(s) / double(samples);
+      const std::size_t k = std::size_t(std::upper_bound(ahead.begin(), ahead.end(), target) -
+                                        ahead.begin()) - 1;
+      sample.push_back(localKeys[k]);
+      weight.push_back(work / double(samples));
     }
     std::vector<std::uint64_t> keys = allgatherv(sample);
     std::vector<double> weights = allgatherv(weight);
@@ -122,6 +145,7 @@ private:
   }
 
   double cellSize_ = 1.0;
+  int searches_ = 0;
   std::vector<std::uint64_t> splitters_; ///< rank r owns [splitters[r-1], splitters[r])
 };
 

@@ -3,10 +3,25 @@
 
 #include <wash/openmp/for_each.hpp>
 
+#include <chrono>
+
 namespace wash::mpi {
 
+/// Seconds this rank has spent in particle loops since the domain was last
+/// balanced: its work as measured, which is what the balance evens out (a
+/// rank on a slower or busier core gets fewer particles).
+inline double &busySeconds() {
+  static double seconds = 0.0;
+  return seconds;
+}
+
 /// Calls body(i) for every owned particle position, on all OpenMP threads of
-/// this rank (hybrid MPI + OpenMP): the OpenMP backend's loop.
-using wash::openmp::forEachParticle;
+/// this rank (hybrid MPI + OpenMP): the OpenMP backend's loop, timed.
+template <typename Body>
+inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+  const auto start = std::chrono::steady_clock::now();
+  wash::openmp::forEachParticle(rows, body);
+  busySeconds() += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 } // namespace wash::mpi

@@ -16,6 +16,7 @@
 #include <wash/backend/periodic.hpp>
 #include <wash/mpi/comm.hpp>
 #include <wash/mpi/domain.hpp>
+#include <wash/mpi/for_each.hpp>
 #include <wash/detail/run_output.hpp>
 
 #include <cstring>
@@ -168,16 +169,23 @@ void keepInitialShare(Particles &P, Domain<D> &domain, HaloPlan &plan) {
 }
 
 /// Before a new neighbour search: drops the halo, rebalances the domain when
-/// the largest rank holds more than `tolerance` times the mean, and migrates.
+/// the busiest rank spent more than `tolerance` times the mean time in
+/// particle loops since the last balance (judged over `interval` searches at
+/// least, so that one noisy step does not move particles), and migrates.
 template <int D, typename Particles>
-void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolerance = 1.1) {
+void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolerance = 1.1,
+                  int interval = 4) {
   dropGhosts(P, plan);
-  std::uint64_t largest = allreduceMax(P.size()), total = allreduceSum(P.size());
-  if (double(largest) > tolerance * double(total) / ranks()) {
-    std::vector<std::uint64_t> keys(P.size());
-    for (Index i = 0; i < P.size(); ++i)
-      keys[i] = domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i])));
-    domain.balance(std::move(keys));
+  if (domain.searchesSinceBalance()++ >= interval) {
+    const double busy = busySeconds();
+    const double busiest = allreduceMax(busy), total = allreduceSum(busy);
+    if (busiest > tolerance * total / ranks()) {
+      std::vector<std::uint64_t> keys(P.size());
+      for (Index i = 0; i < P.size(); ++i)
+        keys[i] = domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i])));
+      domain.balance(std::move(keys), busy);
+      busySeconds() = 0.0;
+    }
   }
   migrate(P, domain, plan);
 }
