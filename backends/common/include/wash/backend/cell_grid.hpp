@@ -43,15 +43,20 @@ public:
     if (n > std::numeric_limits<Index>::max())
       throw std::length_error("wash: more particles than the index type holds");
     radius_ = r;
-    std::array<std::int64_t, D> lo, hi;
-    lo.fill(std::numeric_limits<std::int64_t>::max());
-    hi.fill(std::numeric_limits<std::int64_t>::min());
-    for (std::size_t p = 0; p < n; ++p)
-      for (int a = 0; a < D; ++a) {
-        std::int64_t c = coordinate(double(pos[p].at(a)));
-        lo[a] = std::min(lo[a], c);
-        hi[a] = std::max(hi[a], c);
+    // Cell bounds from the extreme coordinates (the cell is monotone in them).
+    std::array<std::int64_t, D> lo{}, hi{};
+    for (int a = 0; a < D && n > 0; ++a) {
+      double least = std::numeric_limits<double>::infinity(), most = -least;
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(static) reduction(min : least) reduction(max : most)
+#endif
+      for (std::size_t p = 0; p < n; ++p) {
+        least = std::min(least, double(pos[p].at(a)));
+        most = std::max(most, double(pos[p].at(a)));
       }
+      lo[a] = coordinate(least);
+      hi[a] = coordinate(most);
+    }
     std::size_t cells = 1;
     for (int a = 0; a < D; ++a) {
       lo_[a] = n ? lo[a] : 0;
@@ -62,6 +67,7 @@ public:
       throw std::length_error("wash: the particles span more cells than the grid can index; "
                               "is a particle far outside the others?");
     cell_.resize(n);
+    WASH_PARALLEL_FOR
     for (std::size_t p = 0; p < n; ++p) {
       std::array<std::int64_t, D> c;
       for (int a = 0; a < D; ++a)
@@ -78,6 +84,9 @@ public:
     std::vector<Index> next(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t p = 0; p < n; ++p)
       order[next[cell_[p]]++] = Index(p);
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(dynamic, 256)
+#endif
     for (std::size_t c = 0; c < cells; ++c)
       std::sort(order.begin() + cellStart_[c], order.begin() + cellStart_[c + 1],
                 [&](Index a, Index b) { return id[a] < id[b]; });

@@ -5,6 +5,16 @@
 #include <cstdint>
 #include <vector>
 
+// The runtime's own whole-column loops (reordering, the cell sort, the finite
+// checks) run on every thread in programs built with OpenMP (openmp and mpi
+// backends) and as plain loops in serial programs: left serial, they cap the
+// OpenMP speed-up (Amdahl) as cores are added.
+#if defined(_OPENMP)
+#define WASH_PARALLEL_FOR _Pragma("omp parallel for schedule(static)")
+#else
+#define WASH_PARALLEL_FOR
+#endif
+
 namespace wash::backend {
 
 /// Particle index in the current storage order (which changes when particles
@@ -22,7 +32,9 @@ template <typename T> using Column = std::vector<T>;
 template <typename T> void permute(Column<T> &column, const std::vector<Index> &order) {
   static Column<T> scratch;
   scratch.resize(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k)
+  const std::size_t n = order.size();
+  WASH_PARALLEL_FOR
+  for (std::size_t k = 0; k < n; ++k)
     scratch[k] = column[order[k]];
   column.swap(scratch);
 }

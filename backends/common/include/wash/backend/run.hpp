@@ -87,11 +87,22 @@ public:
       if (!finite(column[p]))
         fail(step, kernel, field, ids[p], column[p]);
   }
-  /// The same over the given positions only (an MPI rank's own particles).
+  /// The same over the given positions only (the real particles, or an MPI
+  /// rank's own). All threads look; the message names the first bad one in
+  /// `rows` order, whatever the thread count.
   template <typename T>
   void checkFinite(const Column<T> &column, const Column<std::uint64_t> &ids,
                    const std::vector<Index> &rows, std::uint64_t step, const char *kernel,
                    const char *field) const {
+    const std::size_t n = rows.size();
+    std::size_t bad = 0;
+#if defined(_OPENMP)
+#pragma omp parallel for schedule(static) reduction(+ : bad)
+#endif
+    for (std::size_t k = 0; k < n; ++k)
+      bad += !finite(column[rows[k]]);
+    if (bad == 0)
+      return;
     for (Index p : rows)
       if (!finite(column[p]))
         fail(step, kernel, field, ids[p], column[p]);
