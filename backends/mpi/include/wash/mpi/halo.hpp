@@ -70,6 +70,21 @@ const char *unpack(backend::Column<T> &c, const std::vector<Index> &at, const ch
   return in + at.size() * sizeof(T);
 }
 
+/// Calls visit(cell) for every cell of the box [first, last], x fastest, while
+/// it returns true.
+template <typename Cell, typename Visit>
+void forEachCellIn(const Cell &first, const Cell &last, Visit visit) {
+  Cell c = first;
+  while (visit(c)) {
+    std::size_t a = 0;
+    while (a < c.size() && c[a] == last[a])
+      c[a] = first[a], ++a;
+    if (a == c.size())
+      return;
+    ++c[a];
+  }
+}
+
 /// Sends the columns `fields` visits, at send[r], to each rank r, and writes
 /// what arrives from rank r at recv[r]. One message per rank pair.
 template <typename Fields>
@@ -223,7 +238,7 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
       *high[a] = std::max(high.at(a), p.at(a));
     }
   }
-  Cell lo, hi, from, to, c;
+  Cell lo, hi, from, to;
   stencil(low, lo, to);
   stencil(high, from, hi);
   // Owners of the cells around this rank's particles, computed once per cell
@@ -262,18 +277,11 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
       first[a] = std::max(lo[a], own[a] - reach);
       last[a] = std::min(hi[a], own[a] + reach);
     }
-    Cell x = first;
     known = 1;
-    while (known == 1) {
-      if (ownerOf(x) != me)
-        known = 0;
-      int a = 0;
-      while (a < D && x[a] == last[a])
-        x[a] = first[a], ++a;
-      if (a == D)
-        break;
-      ++x[a];
-    }
+    detail::forEachCellIn(first, last, [&](const Cell &x) {
+      known = ownerOf(x) == me;
+      return known == 1;
+    });
     return known == 1;
   };
   std::vector<std::vector<Index>> send(n);
@@ -284,20 +292,14 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
       continue;
     stencil(p, from, to);
     seen.assign(1, me);
-    c = from;
-    while (true) {
-      int owner = ownerOf(c);
+    detail::forEachCellIn(from, to, [&](const Cell &cell) {
+      const int owner = ownerOf(cell);
       if (std::find(seen.begin(), seen.end(), owner) == seen.end()) {
         seen.push_back(owner);
         send[owner].push_back(i);
       }
-      int a = 0;
-      while (a < D && c[a] == to[a])
-        c[a] = from[a], ++a;
-      if (a == D)
-        break;
-      ++c[a];
-    }
+      return true;
+    });
   }
   std::vector<std::size_t> counts(n);
   for (int r = 0; r < n; ++r)
