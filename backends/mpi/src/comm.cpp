@@ -33,9 +33,9 @@ template <typename T> std::vector<T> gatherAll(const std::vector<T> &local) {
   return all;
 }
 
-std::uint64_t reduce(std::uint64_t v, MPI_Op op) {
-  std::uint64_t out = 0;
-  MPI_Allreduce(&v, &out, 1, MPI_UINT64_T, op, MPI_COMM_WORLD);
+template <typename T> T reduce(T v, MPI_Op op) {
+  T out = 0;
+  MPI_Allreduce(&v, &out, 1, type<T>(), op, MPI_COMM_WORLD);
   return out;
 }
 
@@ -89,16 +89,8 @@ std::vector<char> alltoallv(const std::vector<std::vector<char>> &send,
 std::uint64_t allreduceSum(std::uint64_t v) { return reduce(v, MPI_SUM); }
 std::uint64_t allreduceMax(std::uint64_t v) { return reduce(v, MPI_MAX); }
 std::uint64_t allreduceMin(std::uint64_t v) { return reduce(v, MPI_MIN); }
-double allreduceMax(double v) {
-  double out = 0;
-  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
-  return out;
-}
-double allreduceSum(double v) {
-  double out = 0;
-  MPI_Allreduce(&v, &out, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
-  return out;
-}
+double allreduceMax(double v) { return reduce(v, MPI_MAX); }
+double allreduceSum(double v) { return reduce(v, MPI_SUM); }
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &l) { return gatherAll(l); }
 std::vector<double> allgatherv(const std::vector<double> &l) { return gatherAll(l); }
 
@@ -108,10 +100,8 @@ double reduceById(const std::vector<std::uint64_t> &ids, const std::vector<doubl
     std::vector<double> mine;
     for (std::uint32_t p : rows)
       mine.push_back(values[p]);
-    double local = detail::reduceInIdOrder(mine, op), global = local;
-    MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, op == detail::ReduceOp::Min ? MPI_MIN : MPI_MAX,
-                  MPI_COMM_WORLD);
-    return global;
+    return reduce(detail::reduceInIdOrder(mine, op),
+                  op == detail::ReduceOp::Min ? MPI_MIN : MPI_MAX);
   }
   std::vector<std::uint64_t> myIds;
   std::vector<double> myValues;

@@ -42,7 +42,7 @@ void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
                       const std::string &Indent) {
   for (const std::string &F : K.OwnWrites)
     if (Plan.Member.count(F) && F != "id") // A dead write needs no check.
-      OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id" << Rows << ", " << Step
+      OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, " << Rows << ", " << Step
          << ", \"" << K.Function << "\", \"" << F << "\");\n";
 }
 

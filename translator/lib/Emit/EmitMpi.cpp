@@ -42,7 +42,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
      << (Kn.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ");\n" : "(self);\n")
      << "    });\n";
   emitWrap(OS, Kn, "halo.owned", "    ");
-  emitFiniteChecks(OS, Kn, Plan, "step", ", halo.owned", "    ");
+  emitFiniteChecks(OS, Kn, Plan, "step", "halo.owned", "    ");
 }
 
 } // namespace
@@ -99,7 +99,7 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
       emitWrap(OS, M.Kernels[K], "halo.owned", "  ");
-      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", ", halo.owned", "  ");
+      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "halo.owned", "  ");
     }
   OS << "  run.begin(wash::mpi::allreduceSum(halo.owned.size()), frame);\n";
   emitIterations(OS, M, [&](unsigned K) { emitKernel(OS, M, Plan, K, Callees[K]); });

@@ -46,7 +46,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
      << "      " << Callee << (isForce(Kn) ? "(self, " + neighbourListText(Plan) + ");\n" : "(self);\n")
      << "    });\n";
   emitWrap(OS, Kn, "images.owned", "    ");
-  emitFiniteChecks(OS, Kn, Plan, "step", ", images.owned", "    ");
+  emitFiniteChecks(OS, Kn, Plan, "step", "images.owned", "    ");
 }
 
 } // namespace
@@ -155,7 +155,7 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
       OS << "  " << Callees[K] << "(); // init kernel\n"
          << "  images.ownAll(P.size());\n";
       emitWrap(OS, M.Kernels[K], "images.owned", "  ");
-      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", ", images.owned", "  ");
+      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "images.owned", "  ");
     }
   OS << "  images.ownAll(P.size());\n"
      << "  run.begin(P.size(), frame);\n";

@@ -5,24 +5,25 @@ namespace wash::tr {
 
 void planNeighbourSearch(Model &M) {
   M.Searches.clear();
-  bool PosWritten = true; // Nothing to reuse at the start of an iteration.
-  // (PosWritten: whatever the search depends on changed since it ran.)
+  // What the last search depends on changed since it ran: at the start of an
+  // iteration there is nothing to reuse.
+  bool SearchStale = true;
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     Kernel &K = M.Kernels[I];
     K.SearchGroup = -1;
     if (K.Kind == KernelKind::Init)
       continue; // Init kernels run once, before the iteration loop.
     if (K.Kind == KernelKind::Force) {
-      if (PosWritten)
+      if (SearchStale)
         M.Searches.push_back({});
       K.SearchGroup = static_cast<int>(M.Searches.size()) - 1;
       M.Searches.back().Kernels.push_back(I);
-      PosWritten = false;
+      SearchStale = false;
     }
     // A search depends on positions and, by smoothing length, on h too.
     if (K.OwnWrites.count("pos") ||
         (M.searchesBySmoothingLength() && K.OwnWrites.count("smoothing_length")))
-      PosWritten = true;
+      SearchStale = true;
   }
 }
 

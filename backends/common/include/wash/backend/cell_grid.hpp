@@ -47,9 +47,7 @@ public:
     std::array<std::int64_t, D> lo{}, hi{};
     for (int a = 0; a < D && n > 0; ++a) {
       double least = std::numeric_limits<double>::infinity(), most = -least;
-#if defined(_OPENMP)
-#pragma omp parallel for schedule(static) reduction(min : least) reduction(max : most)
-#endif
+      WASH_OMP(parallel for schedule(static) reduction(min : least) reduction(max : most))
       for (std::size_t p = 0; p < n; ++p) {
         least = std::min(least, double(pos[p].at(a)));
         most = std::max(most, double(pos[p].at(a)));
@@ -67,7 +65,7 @@ public:
       throw std::length_error("wash: the particles span more cells than the grid can index; "
                               "is a particle far outside the others?");
     cell_.resize(n);
-    WASH_PARALLEL_FOR
+    WASH_OMP(parallel for schedule(static))
     for (std::size_t p = 0; p < n; ++p) {
       std::array<std::int64_t, D> c;
       for (int a = 0; a < D; ++a)
@@ -84,9 +82,7 @@ public:
     std::vector<Index> next(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t p = 0; p < n; ++p)
       order[next[cell_[p]]++] = Index(p);
-#if defined(_OPENMP)
-#pragma omp parallel for schedule(dynamic, 256)
-#endif
+    WASH_OMP(parallel for schedule(dynamic, 256))
     for (std::size_t c = 0; c < cells; ++c)
       std::sort(order.begin() + cellStart_[c], order.begin() + cellStart_[c + 1],
                 [&](Index a, Index b) { return id[a] < id[b]; });

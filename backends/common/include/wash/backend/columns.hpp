@@ -5,14 +5,15 @@
 #include <cstdint>
 #include <vector>
 
-// The runtime's own whole-column loops (reordering, the cell sort, the finite
-// checks) run on every thread in programs built with OpenMP (openmp and mpi
-// backends) and as plain loops in serial programs: left serial, they cap the
-// OpenMP speed-up (Amdahl) as cores are added.
+// WASH_OMP(directive) is `#pragma omp directive` in programs built with OpenMP
+// (openmp and mpi backends) and nothing in serial ones. The runtime's own
+// whole-column loops (reordering, the cell sort, the finite checks) use it:
+// left serial, they would cap the OpenMP speed-up (Amdahl) as cores are added.
 #if defined(_OPENMP)
-#define WASH_PARALLEL_FOR _Pragma("omp parallel for schedule(static)")
+#define WASH_OMP_TEXT(...) #__VA_ARGS__
+#define WASH_OMP(...) _Pragma(WASH_OMP_TEXT(omp __VA_ARGS__))
 #else
-#define WASH_PARALLEL_FOR
+#define WASH_OMP(...)
 #endif
 
 namespace wash::backend {
@@ -33,7 +34,7 @@ template <typename T> void permute(Column<T> &column, const std::vector<Index> &
   static Column<T> scratch;
   scratch.resize(order.size());
   const std::size_t n = order.size();
-  WASH_PARALLEL_FOR
+  WASH_OMP(parallel for schedule(static))
   for (std::size_t k = 0; k < n; ++k)
     scratch[k] = column[order[k]];
   column.swap(scratch);

@@ -38,7 +38,7 @@ public:
     begin_.assign(pos.size(), nullptr);
     end_.assign(pos.size(), nullptr);
     offset_.resize(n);
-#pragma omp parallel for schedule(static, 1)
+    WASH_OMP(parallel for schedule(static, 1))
     for (int s = 0; s < shares; ++s) {
       const std::size_t from = n * std::size_t(s) / std::size_t(shares),
                         to = n * std::size_t(s + 1) / std::size_t(shares);

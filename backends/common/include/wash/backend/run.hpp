@@ -79,26 +79,17 @@ public:
   /// Prints one more line of the end-of-run summary (writing run, not --quiet).
   void report(const std::string &line) const;
 
-  /// Stops the run if a value the kernel wrote is not finite.
-  template <typename T>
-  void checkFinite(const Column<T> &column, const Column<std::uint64_t> &ids, std::uint64_t step,
-                   const char *kernel, const char *field) const {
-    for (std::size_t p = 0; p < column.size(); ++p)
-      if (!finite(column[p]))
-        fail(step, kernel, field, ids[p], column[p]);
-  }
-  /// The same over the given positions only (the real particles, or an MPI
-  /// rank's own). All threads look; the message names the first bad one in
-  /// `rows` order, whatever the thread count.
+  /// Stops the run if a value the kernel wrote, at the given positions (the
+  /// real particles, or an MPI rank's own), is not finite. All threads look;
+  /// the message names the first bad one in `rows` order, whatever the thread
+  /// count.
   template <typename T>
   void checkFinite(const Column<T> &column, const Column<std::uint64_t> &ids,
                    const std::vector<Index> &rows, std::uint64_t step, const char *kernel,
                    const char *field) const {
     const std::size_t n = rows.size();
     std::size_t bad = 0;
-#if defined(_OPENMP)
-#pragma omp parallel for schedule(static) reduction(+ : bad)
-#endif
+    WASH_OMP(parallel for schedule(static) reduction(+ : bad))
     for (std::size_t k = 0; k < n; ++k)
       bad += !finite(column[rows[k]]);
     if (bad == 0)

@@ -40,11 +40,13 @@ SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
                                  const Column<std::uint64_t> &ids, const std::vector<Index> &rows,
                                  const detail::Box &box, int dims, std::uint64_t step,
                                  const char *kernel, double (*globalMax)(double) = nullptr) {
-  const std::string where = "step " + std::to_string(step) + ": kernel '" + kernel + "': ";
+  auto fail = [&](const std::string &what) {
+    throw detail::RunError("step " + std::to_string(step) + ": kernel '" + kernel + "': " + what);
+  };
   double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
   for (Index p : rows) {
     if (std::string bad = detail::checkSmoothingLength(double(h[p])); !bad.empty())
-      throw detail::RunError(where + "particle " + std::to_string(ids[p]) + ": " + bad);
+      fail("particle " + std::to_string(ids[p]) + ": " + bad);
     const double r = detail::supportRadius(support, double(h[p]));
     largest = std::max(largest, r);
     smallest = std::min(smallest, r);
@@ -54,7 +56,7 @@ SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
   if (rows.empty())
     smallest = largest;
   if (std::string bad = detail::checkPeriodicSupport(box, dims, largest); !bad.empty())
-    throw detail::RunError(where + bad);
+    fail(bad);
   SearchGeometry g;
   g.reach = largest;
   g.support = support;

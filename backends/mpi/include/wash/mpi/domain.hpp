@@ -57,6 +57,11 @@ public:
     return key;
   }
 
+  /// The key of the cell a position lies in.
+  template <typename PosT> std::uint64_t keyAt(const PosT &p) const {
+    return keyOf(cellOf(Vec<double, D>(p)));
+  }
+
   int ownerOf(std::uint64_t key) const {
     return int(std::upper_bound(splitters_.begin(), splitters_.end(), key) - splitters_.begin());
   }

@@ -120,7 +120,7 @@ void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
   std::vector<std::vector<Index>> send(n);
   std::vector<Index> keep;
   for (Index i = 0; i < P.size(); ++i) {
-    int owner = domain.ownerOf(domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i]))));
+    int owner = domain.ownerOf(domain.keyAt(P.pos[i]));
     (owner == me ? keep : send[owner]).push_back(i);
   }
   std::vector<std::size_t> counts(n);
@@ -173,7 +173,7 @@ void keepInitialShare(Particles &P, Domain<D> &domain, HaloPlan &plan) {
                                 "deterministic");
   std::vector<std::uint64_t> keys(P.size());
   for (Index i = 0; i < P.size(); ++i)
-    keys[i] = domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i])));
+    keys[i] = domain.keyAt(P.pos[i]);
   domain.balanceExactly(keys);
   std::vector<Index> mine;
   for (Index i = 0; i < P.size(); ++i)
@@ -197,7 +197,7 @@ void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolera
     if (busiest > tolerance * total / ranks()) {
       std::vector<std::uint64_t> keys(P.size());
       for (Index i = 0; i < P.size(); ++i)
-        keys[i] = domain.keyOf(domain.cellOf(Vec<double, D>(P.pos[i])));
+        keys[i] = domain.keyAt(P.pos[i]);
       domain.balance(std::move(keys), busy);
       busySeconds() = 0.0;
     }

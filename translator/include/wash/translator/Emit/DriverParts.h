@@ -17,8 +17,8 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan);
 /// The FrameBuilder calls of `frame()`, in output order (`f` is the builder).
 void emitFrameColumns(std::ostream &OS, const CodePlan &Plan);
 
-/// `run.checkFinite(...)` for every stored field K writes; Rows is "" for all
-/// particles or the expression of the positions to check (", halo.owned").
+/// `run.checkFinite(...)` for every stored field K writes, at the positions
+/// the expression Rows names ("images.owned", "halo.owned").
 void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
                       const std::string &Step, const std::string &Rows,
                       const std::string &Indent);
