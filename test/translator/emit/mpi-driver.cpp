@@ -10,7 +10,7 @@
 // CHECK: wash::mpi::keepInitialShare(P, domain, halo);
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(), [](auto send) { send(P.id); send(P.pos); send(P.mass); });
-// CHECK: wash::mpi::forEachParticle(halo.owned, [](Index i) {
+// CHECK: wash::mpi::forEachParticleChecked(halo.owned, [](Index i) {
 // CHECK-LABEL: // Pressure: force kernel, reuses the neighbour search of 'Density'
 // CHECK-NEXT: wash::mpi::exchange(halo, [](auto send) { send(P.density); });
 // CHECK-LABEL: // Heat: force kernel, reuses the neighbour search of 'Density'

@@ -6,9 +6,9 @@
 // RUN: FileCheck %s --check-prefix=CMAKE --input-file %t/CMakeLists.txt
 // HEADER: #include <wash/openmp/for_each.hpp>
 // CHECK: wash::backend::Run run("openmp", 2, false);
-// CHECK: wash::openmp::forEachParticle(images.owned, [](Index i) {
+// CHECK: wash::openmp::forEachParticleChecked(images.owned, [](Index i) {
 // CHECK: ::Count(self, NeighbourList(grid, P.pos, i));
-// CHECK: wash::openmp::forEachParticle(images.owned, [](Index i) {
+// CHECK: wash::openmp::forEachParticleChecked(images.owned, [](Index i) {
 // CHECK: ::Drift(self);
 // CMAKE: find_package(wash REQUIRED CONFIG HINTS
 // CMAKE: add_executable(openmp-driver-openmp openmp-driver.openmp.cpp)

@@ -7,8 +7,11 @@
 // CHECK-NOT: wrapPositions
 // CHECK-LABEL: // Drift: update kernel
 // CHECK: ::Drift(self);
+// CHECK-NEXT: return wash::backend::finite(P.pos[i]);
 // CHECK-NEXT: });
 // CHECK-NEXT: wash::backend::wrapPositions(P.pos, images.owned, run.box());
+// CHECK-NEXT: if (!wroteFinite1) {
+// CHECK-NEXT: run.checkFinite(P.pos, P.id, images.owned, step, "Drift", "pos");
 #include <wash/wash.hpp>
 #include <vector>
 

@@ -37,13 +37,52 @@ void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
   }
 }
 
+namespace {
+/// The stored fields K writes: what must stay finite (a dead write needs no check).
+std::vector<std::string> checkedFields(const Kernel &K, const CodePlan &Plan) {
+  std::vector<std::string> Fields;
+  for (const std::string &F : K.OwnWrites)
+    if (Plan.Member.count(F) && F != "id")
+      Fields.push_back(F);
+  return Fields;
+}
+} // namespace
+
 void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
                       const std::string &Step, const std::string &Rows,
                       const std::string &Indent) {
-  for (const std::string &F : K.OwnWrites)
-    if (Plan.Member.count(F) && F != "id") // A dead write needs no check.
-      OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, " << Rows << ", " << Step
-         << ", \"" << K.Function << "\", \"" << F << "\");\n";
+  for (const std::string &F : checkedFields(K, Plan))
+    OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, " << Rows << ", " << Step
+       << ", \"" << K.Function << "\", \"" << F << "\");\n";
+}
+
+void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned Index, const CodePlan &Plan,
+                      const std::string &LoopNamespace, const std::string &Rows,
+                      const std::string &Call) {
+  const std::vector<std::string> Checked = checkedFields(K, Plan);
+  if (Checked.empty()) {
+    OS << "    " << LoopNamespace << "::forEachParticle(" << Rows << ", [](Index i) {\n"
+       << "      Self self{i};\n"
+       << "      " << Call << ";\n"
+       << "    });\n";
+    emitWrap(OS, K, Rows, "    ");
+    return;
+  }
+  const std::string Finite = "wroteFinite" + std::to_string(Index);
+  OS << "    const bool " << Finite << " = " << LoopNamespace << "::forEachParticleChecked(" << Rows
+     << ", [](Index i) {\n"
+     << "      Self self{i};\n"
+     << "      " << Call << ";\n"
+     << "      return";
+  for (unsigned F = 0; F < Checked.size(); ++F)
+    OS << (F ? " &\n             " : " ") << "wash::backend::finite(P." << Plan.Member.at(Checked[F])
+       << "[i])";
+  OS << ";\n"
+     << "    });\n";
+  emitWrap(OS, K, Rows, "    ");
+  OS << "    if (!" << Finite << ") {\n";
+  emitFiniteChecks(OS, K, Plan, "step", Rows, "      ");
+  OS << "    }\n";
 }
 
 void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,

@@ -36,13 +36,9 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     }
     emitSnapshots(OS, Kn, Plan);
   }
-  OS << "    wash::mpi::forEachParticle(halo.owned, [](Index i) {\n"
-     << "      Self self{i};\n"
-     << "      " << Callee
-     << (Kn.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ");\n" : "(self);\n")
-     << "    });\n";
-  emitWrap(OS, Kn, "halo.owned", "    ");
-  emitFiniteChecks(OS, Kn, Plan, "step", "halo.owned", "    ");
+  emitParticleLoop(OS, Kn, K, Plan, "wash::mpi", "halo.owned",
+                   Callee + (Kn.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ")"
+                                                          : "(self)"));
 }
 
 } // namespace

@@ -41,12 +41,8 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
          << ");\n";
     emitSnapshots(OS, Kn, Plan);
   }
-  OS << "    " << loopNamespace(Plan.Target) << "::forEachParticle(images.owned, [](Index i) {\n"
-     << "      Self self{i};\n"
-     << "      " << Callee << (isForce(Kn) ? "(self, " + neighbourListText(Plan) + ");\n" : "(self);\n")
-     << "    });\n";
-  emitWrap(OS, Kn, "images.owned", "    ");
-  emitFiniteChecks(OS, Kn, Plan, "step", "images.owned", "    ");
+  emitParticleLoop(OS, Kn, K, Plan, loopNamespace(Plan.Target), "images.owned",
+                   Callee + (isForce(Kn) ? "(self, " + neighbourListText(Plan) + ")" : "(self)"));
 }
 
 } // namespace

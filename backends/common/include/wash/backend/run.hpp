@@ -40,6 +40,17 @@ Settings &settings();
 /// The program options __wrap_main found.
 detail::RunOptions &programOptions();
 
+/// Whether every component of a value is finite. The generated particle loops
+/// test what each kernel wrote right after it ran, while the values are still
+/// in registers; Run::checkFinite then names the culprit, on the rare failure.
+inline bool finite(double v) { return std::isfinite(v); }
+template <typename T, int D> bool finite(const Vec<T, D> &v) {
+  bool all = true;
+  for (int a = 0; a < D; ++a)
+    all &= bool(std::isfinite(v.at(a)));
+  return all;
+}
+
 class Run {
 public:
   /// Checks the settings against what the program was translated for (its
@@ -103,13 +114,6 @@ private:
   void started(std::size_t particles);
   bool frameDue(std::uint64_t step) const;
   void write(std::uint64_t step, const detail::Frame &frame);
-  static bool finite(double v) { return std::isfinite(v); }
-  template <typename T, int D> static bool finite(const Vec<T, D> &v) {
-    for (int a = 0; a < D; ++a)
-      if (!std::isfinite(v.at(a)))
-        return false;
-    return true;
-  }
   template <typename T> static double firstBad(const T &v) { return double(v); }
   template <typename T, int D> static double firstBad(const Vec<T, D> &v) {
     for (int a = 0; a < D; ++a)

@@ -15,13 +15,31 @@ inline double &busySeconds() {
   return seconds;
 }
 
+/// Adds the time of the enclosing scope to busySeconds().
+class BusyClock {
+public:
+  ~BusyClock() {
+    busySeconds() += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
 /// Calls body(i) for every owned particle position, on all OpenMP threads of
 /// this rank (hybrid MPI + OpenMP): the OpenMP backend's loop, timed.
 template <typename Body>
 inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  const auto start = std::chrono::steady_clock::now();
+  BusyClock clock;
   wash::openmp::forEachParticle(rows, body);
-  busySeconds() += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The same loop for a body that returns whether what it wrote is finite:
+/// returns whether every call did (on this rank).
+template <typename Body>
+inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
+  BusyClock clock;
+  return wash::openmp::forEachParticleChecked(rows, body);
 }
 
 } // namespace wash::mpi

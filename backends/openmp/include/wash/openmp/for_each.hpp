@@ -20,4 +20,18 @@ inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) 
     body(rows[k]);
 }
 
+/// The same loop for a body that returns whether what it wrote is finite:
+/// returns whether every call did.
+template <typename Body>
+inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
+  const std::size_t n = rows.size();
+  bool all = true;
+#pragma omp parallel for schedule(dynamic, 256) reduction(&& : all)
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool finite = body(rows[k]);
+    all = all && finite;
+  }
+  return all;
+}
+
 } // namespace wash::openmp

@@ -14,4 +14,14 @@ inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) 
     body(i);
 }
 
+/// The same loop for a body that returns whether what it wrote is finite:
+/// returns whether every call did.
+template <typename Body>
+inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
+  bool all = true;
+  for (backend::Index i : rows)
+    all &= body(i);
+  return all;
+}
+
 } // namespace wash::serial
