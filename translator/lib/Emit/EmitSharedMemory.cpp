@@ -78,8 +78,10 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "using Stored = wash::Vec<Real, " << Plan.Dim << ">;\n"
      << "using Index = wash::backend::Index;\n"
      << "using Self = wash::backend::Self;\n"
-     << "using NeighbourRef = wash::backend::NeighbourRef;\n"
-     << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim << ", Stored>;\n\n"
+     << "using NeighbourRef = wash::backend::"
+     << (Plan.SmoothingSearch ? "StoredNeighbourRef; // the search keeps every list\n"
+                              : "NeighbourRef;\n")
+     << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim << ", Stored, NeighbourRef>;\n\n"
      << "struct Particles {\n";
   for (const Field *F : Plan.Stored)
     OS << "  wash::backend::Column<" << (F->Name == "id" ? "std::uint64_t"

@@ -24,6 +24,8 @@ namespace wash::backend {
 
 template <int D, typename PosT> class NeighbourTable {
 public:
+  using List = Neighbours<D, PosT, StoredNeighbourRef>;
+
   /// The lists of the particles at `rows`, in ascending id order.
   template <typename RealT>
   void build(const CellGrid<D> &grid, const Column<PosT> &pos, const Column<std::uint64_t> &ids,
@@ -42,11 +44,11 @@ public:
     for (int s = 0; s < shares; ++s) {
       const std::size_t from = n * std::size_t(s) / std::size_t(shares),
                         to = n * std::size_t(s + 1) / std::size_t(shares);
-      std::vector<NeighbourRef> &buffer = buffers_[std::size_t(s)];
+      std::vector<StoredNeighbourRef> &buffer = buffers_[std::size_t(s)];
       buffer.clear();
       for (std::size_t k = from; k < to; ++k) {
         const Index i = rows[k];
-        Neighbours<D, PosT> list(grid, pos, i, ids, g.radiusOf(double(h[i])));
+        List list(grid, pos, i, ids, g.radiusOf(double(h[i])));
         offset_[k] = buffer.size();
         buffer.insert(buffer.end(), list.begin(), list.end());
       }
@@ -58,11 +60,11 @@ public:
   }
 
   /// The neighbours of the particle at row i (one of the rows built).
-  Neighbours<D, PosT> list(Index i) const { return Neighbours<D, PosT>(begin_[i], end_[i]); }
+  List list(Index i) const { return List(begin_[i], end_[i]); }
 
 private:
-  std::vector<std::vector<NeighbourRef>> buffers_;
-  std::vector<const NeighbourRef *> begin_, end_;
+  std::vector<std::vector<StoredNeighbourRef>> buffers_;
+  std::vector<const StoredNeighbourRef *> begin_, end_;
   std::vector<std::size_t> offset_;
 };
 

@@ -22,11 +22,17 @@ struct Self {
   constexpr operator Index() const { return index; }
 };
 
-/// A neighbour of the particle a force kernel runs for: read-only.
-struct NeighbourRef {
-  Index index;
-  constexpr operator Index() const { return index; }
+/// A neighbour of the particle a force kernel runs for: read-only. Its row is
+/// 64-bit in the lists built for one particle at a time (NeighbourRef): g++
+/// vectorises gathers of doubles only through 64-bit indices. The lists a
+/// NeighbourTable keeps for every particle hold 32-bit rows (StoredNeighbourRef),
+/// half the memory.
+template <typename Row> struct NeighbourRefOf {
+  Row index;
+  constexpr operator std::size_t() const { return index; }
 };
+using NeighbourRef = NeighbourRefOf<std::size_t>;
+using StoredNeighbourRef = NeighbourRefOf<Index>;
 
 /// The neighbours of one particle, in canonical order. Built when the kernel
 /// starts for that particle by walking the cell grid's candidate ranges and
@@ -34,7 +40,7 @@ struct NeighbourRef {
 /// of the kernel and its helpers then run over that short list only. The list
 /// lives in a per-thread buffer: one Neighbours per thread at a time, which is
 /// how the generated drivers use it.
-template <int D, typename PosT> class Neighbours {
+template <int D, typename PosT, typename Ref = NeighbourRef> class Neighbours {
 public:
   Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self) {
     scan(grid, pos, self, grid.radius());
@@ -52,28 +58,28 @@ public:
     for (std::size_t k = 0; k < kept; ++k) // ids and rows below 2^32: the order is the id's
       keys[k] = ids[begin_[k].index] << 32 | begin_[k].index;
     std::sort(keys.begin(), keys.begin() + std::ptrdiff_t(kept));
-    NeighbourRef *out = threadBuffer().data();
+    Ref *out = threadBuffer().data();
     for (std::size_t k = 0; k < kept; ++k)
       out[k].index = Index(keys[k] & 0xffffffffu);
   }
 
   /// A list kept elsewhere (NeighbourTable).
-  Neighbours(const NeighbourRef *begin, const NeighbourRef *end) : begin_(begin), end_(end) {}
+  Neighbours(const Ref *begin, const Ref *end) : begin_(begin), end_(end) {}
 
-  const NeighbourRef *begin() const { return begin_; }
-  const NeighbourRef *end() const { return end_; }
+  const Ref *begin() const { return begin_; }
+  const Ref *end() const { return end_; }
   std::size_t size() const { return std::size_t(end_ - begin_); }
   bool empty() const { return begin_ == end_; }
-  const NeighbourRef &operator[](std::size_t k) const { return begin_[k]; }
-  const NeighbourRef &at(std::size_t k) const {
+  const Ref &operator[](std::size_t k) const { return begin_[k]; }
+  const Ref &at(std::size_t k) const {
     if (k >= size())
       throw std::out_of_range("wash: neighbour index out of range");
     return begin_[k];
   }
-  const NeighbourRef &front() const { return *begin_; }
-  const NeighbourRef &back() const { return end_[-1]; }
-  const NeighbourRef *cbegin() const { return begin_; }
-  const NeighbourRef *cend() const { return end_; }
+  const Ref &front() const { return *begin_; }
+  const Ref &back() const { return end_[-1]; }
+  const Ref *cbegin() const { return begin_; }
+  const Ref *cend() const { return end_; }
 
 private:
   /// Fills the per-thread buffer with the other particles within `radius` of
@@ -87,10 +93,10 @@ private:
     std::size_t candidates = 0;
     for (int r = 0; r < ranges.count; ++r)
       candidates += ranges.end[r] - ranges.begin[r];
-    std::vector<NeighbourRef> &buffer = threadBuffer();
+    std::vector<Ref> &buffer = threadBuffer();
     if (buffer.size() < candidates)
       buffer.resize(candidates);
-    NeighbourRef *out = buffer.data();
+    Ref *out = buffer.data();
     std::size_t kept = 0;
     const PosT *p = pos.data();
     for (int r = 0; r < ranges.count; ++r) {
@@ -108,7 +114,7 @@ private:
 
   /// Appends the candidates [b, e) within sqrt(r2) of centre to out[kept..].
   static std::size_t keep(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
-                          Index b, Index e, NeighbourRef *__restrict out, std::size_t kept) {
+                          Index b, Index e, Ref *__restrict out, std::size_t kept) {
     for (Index j = b; j < e; ++j) {
       double d = double(p[j].at(0)) - centre.at(0);
       double d2 = d * d; // the reference's 0 + d*d: exact, d*d is never -0
@@ -122,8 +128,8 @@ private:
     return kept;
   }
 
-  static std::vector<NeighbourRef> &threadBuffer() {
-    thread_local std::vector<NeighbourRef> buffer;
+  static std::vector<Ref> &threadBuffer() {
+    thread_local std::vector<Ref> buffer;
     return buffer;
   }
   static std::vector<std::uint64_t> &threadKeys() {
@@ -131,8 +137,8 @@ private:
     return keys;
   }
 
-  const NeighbourRef *begin_;
-  const NeighbourRef *end_;
+  const Ref *begin_;
+  const Ref *end_;
 };
 
 } // namespace wash::backend
