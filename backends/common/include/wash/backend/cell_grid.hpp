@@ -47,7 +47,8 @@ public:
     std::array<std::int64_t, D> lo{}, hi{};
     for (int a = 0; a < D && n > 0; ++a) {
       double least = std::numeric_limits<double>::infinity(), most = -least;
-      WASH_OMP(parallel for schedule(static) reduction(min : least) reduction(max : most))
+      WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static) reduction(min : least) \
+               reduction(max : most))
       for (std::size_t p = 0; p < n; ++p) {
         least = std::min(least, double(pos[p].at(a)));
         most = std::max(most, double(pos[p].at(a)));
@@ -65,7 +66,7 @@ public:
       throw std::length_error("wash: the particles span more cells than the grid can index; "
                               "is a particle far outside the others?");
     cell_.resize(n);
-    WASH_OMP(parallel for schedule(static))
+    WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static))
     for (std::size_t p = 0; p < n; ++p) {
       std::array<std::int64_t, D> c;
       for (int a = 0; a < D; ++a)
@@ -82,7 +83,7 @@ public:
     std::vector<Index> next(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t p = 0; p < n; ++p)
       order[next[cell_[p]]++] = Index(p);
-    WASH_OMP(parallel for schedule(dynamic, 256))
+    WASH_OMP(parallel for if(n >= parallelMinimum) schedule(dynamic, 256))
     for (std::size_t c = 0; c < cells; ++c)
       std::sort(order.begin() + cellStart_[c], order.begin() + cellStart_[c + 1],
                 [&](Index a, Index b) { return id[a] < id[b]; });

@@ -18,6 +18,13 @@
 
 namespace wash::backend {
 
+/// Those loops run on all threads only from this many elements on (an OpenMP
+/// `if` clause). Below it they are cheaper than waking the thread team, which
+/// under OMP_WAIT_POLICY=passive costs tens of microseconds a loop: a search
+/// runs over a dozen of them, so at a few thousand particles they would make
+/// the 2-thread program slower than the 1-thread one.
+inline constexpr std::size_t parallelMinimum = 32768;
+
 /// Particle index in the current storage order (which changes when particles
 /// are reordered by cell; the id does not).
 using Index = std::uint32_t;
@@ -34,7 +41,7 @@ template <typename T> void permute(Column<T> &column, const std::vector<Index> &
   static Column<T> scratch;
   scratch.resize(order.size());
   const std::size_t n = order.size();
-  WASH_OMP(parallel for schedule(static))
+  WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static))
   for (std::size_t k = 0; k < n; ++k)
     scratch[k] = column[order[k]];
   column.swap(scratch);

@@ -100,7 +100,7 @@ public:
                    const char *field) const {
     const std::size_t n = rows.size();
     std::size_t bad = 0;
-    WASH_OMP(parallel for schedule(static) reduction(+ : bad))
+    WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static) reduction(+ : bad))
     for (std::size_t k = 0; k < n; ++k)
       bad += !finite(column[rows[k]]);
     if (bad == 0)
