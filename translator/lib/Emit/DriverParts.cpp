@@ -75,8 +75,8 @@ void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned Index, const C
      << "      " << Call << ";\n"
      << "      return";
   for (unsigned F = 0; F < Checked.size(); ++F)
-    OS << (F ? " &\n             " : " ") << "wash::backend::finite(P." << Plan.Member.at(Checked[F])
-       << "[i])";
+    OS << (F ? " &\n             " : " ") << "wash::backend::finite(P."
+       << Plan.Member.at(Checked[F]) << "[i])";
   OS << ";\n"
      << "    });\n";
   emitWrap(OS, K, Rows, "    ");

@@ -37,8 +37,9 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     emitSnapshots(OS, Kn, Plan);
   }
   emitParticleLoop(OS, Kn, K, Plan, "wash::mpi", "halo.owned",
-                   Callee + (Kn.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ")"
-                                                          : "(self)"));
+                   Callee + (Kn.Kind == KernelKind::Force
+                                 ? "(self, " + neighbourListText(Plan) + ")"
+                                 : "(self)"));
 }
 
 } // namespace

@@ -60,8 +60,8 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
   for (const Field &F : M.Fields)
     if (!F.Live)
       Dead += (Dead.empty() ? "" : ", ") + F.Name;
-  OS << "// Fields with no storage (nothing reads or writes them): " << (Dead.empty() ? "none" : Dead)
-     << ".\n#pragma once\n\n"
+  OS << "// Fields with no storage (nothing reads or writes them): "
+     << (Dead.empty() ? "none" : Dead) << ".\n#pragma once\n\n"
      << "#include <wash/backend/program.hpp>\n"
      << "#include <wash/" << backendName(Plan.Target) << "/for_each.hpp>\n"
      << (Plan.Target == Backend::MPI ? "#include <wash/mpi/halo.hpp>\n" : "") << "\n"
@@ -81,7 +81,8 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "using NeighbourRef = wash::backend::"
      << (Plan.SmoothingSearch ? "StoredNeighbourRef; // the search keeps every list\n"
                               : "NeighbourRef;\n")
-     << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim << ", Stored, NeighbourRef>;\n\n"
+     << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim
+     << ", Stored, NeighbourRef>;\n\n"
      << "struct Particles {\n";
   for (const Field *F : Plan.Stored)
     OS << "  wash::backend::Column<" << (F->Name == "id" ? "std::uint64_t"

@@ -10,10 +10,10 @@
 #include <wash/backend/cell_grid.hpp>
 
 #include <algorithm>
-#include <cstring>
-#include <type_traits>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace wash::backend {
@@ -144,7 +144,9 @@ private:
                                 double r2, Index b, Index e, Ref *__restrict out,
                                 std::size_t kept) {
     typedef double Pair __attribute__((vector_size(16)));
-    static_assert(sizeof(Vec<double, 2>) == sizeof(Pair), "Vec<double, 2> is two doubles");
+    static_assert(sizeof(Vec<double, 2>) == sizeof(Pair) &&
+                      std::is_trivially_copyable_v<Vec<double, 2>>,
+                  "Vec<double, 2> is two doubles");
     const Pair c = {centre.at(0), centre.at(1)};
     for (Index j = b; j < e; ++j) {
       Pair d;

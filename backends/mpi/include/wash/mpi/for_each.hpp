@@ -19,7 +19,8 @@ inline double &busySeconds() {
 class BusyClock {
 public:
   ~BusyClock() {
-    busySeconds() += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    busySeconds() +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
 
 private:
