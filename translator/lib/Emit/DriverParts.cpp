@@ -56,9 +56,11 @@ void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
        << ", \"" << K.Function << "\", \"" << F << "\");\n";
 }
 
-void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned Index, const CodePlan &Plan,
+void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned KernelIndex, const CodePlan &Plan,
                       const std::string &LoopNamespace, const std::string &Rows,
-                      const std::string &Call) {
+                      const std::string &Callee) {
+  const std::string Call =
+      Callee + (K.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ")" : "(self)");
   const std::vector<std::string> Checked = checkedFields(K, Plan);
   if (Checked.empty()) {
     OS << "    " << LoopNamespace << "::forEachParticle(" << Rows << ", [](Index i) {\n"
@@ -68,7 +70,7 @@ void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned Index, const C
     emitWrap(OS, K, Rows, "    ");
     return;
   }
-  const std::string Finite = "wroteFinite" + std::to_string(Index);
+  const std::string Finite = "wroteFinite" + std::to_string(KernelIndex);
   OS << "    const bool " << Finite << " = " << LoopNamespace << "::forEachParticleChecked(" << Rows
      << ", [](Index i) {\n"
      << "      Self self{i};\n"

@@ -36,10 +36,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     }
     emitSnapshots(OS, Kn, Plan);
   }
-  emitParticleLoop(OS, Kn, K, Plan, "wash::mpi", "halo.owned",
-                   Callee + (Kn.Kind == KernelKind::Force
-                                 ? "(self, " + neighbourListText(Plan) + ")"
-                                 : "(self)"));
+  emitParticleLoop(OS, Kn, K, Plan, "wash::mpi", "halo.owned", Callee);
 }
 
 } // namespace

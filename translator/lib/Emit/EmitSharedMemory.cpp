@@ -41,8 +41,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
          << ");\n";
     emitSnapshots(OS, Kn, Plan);
   }
-  emitParticleLoop(OS, Kn, K, Plan, loopNamespace(Plan.Target), "images.owned",
-                   Callee + (isForce(Kn) ? "(self, " + neighbourListText(Plan) + ")" : "(self)"));
+  emitParticleLoop(OS, Kn, K, Plan, loopNamespace(Plan.Target), "images.owned", Callee);
 }
 
 } // namespace

@@ -7,7 +7,7 @@
 
 // WASH_OMP(directive) is `#pragma omp directive` in programs built with OpenMP
 // (openmp and mpi backends) and nothing in serial ones. The runtime's own
-// whole-column loops (reordering, the cell sort, the finite checks) use it:
+// whole-column loops (reordering, the cell sort) use it:
 // left serial, they would cap the OpenMP speed-up (Amdahl) as cores are added.
 #if defined(_OPENMP)
 #define WASH_OMP_TEXT(...) #__VA_ARGS__

@@ -91,20 +91,13 @@ public:
   void report(const std::string &line) const;
 
   /// Stops the run if a value the kernel wrote, at the given positions (the
-  /// real particles, or an MPI rank's own), is not finite. All threads look;
-  /// the message names the first bad one in `rows` order, whatever the thread
-  /// count.
+  /// real particles, or an MPI rank's own), is not finite; the message names
+  /// the first bad one in `rows` order. Runs after the init kernels, and after
+  /// a particle loop only when its in-loop test failed: one thread is enough.
   template <typename T>
   void checkFinite(const Column<T> &column, const Column<std::uint64_t> &ids,
                    const std::vector<Index> &rows, std::uint64_t step, const char *kernel,
                    const char *field) const {
-    const std::size_t n = rows.size();
-    std::size_t bad = 0;
-    WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static) reduction(+ : bad))
-    for (std::size_t k = 0; k < n; ++k)
-      bad += !finite(column[rows[k]]);
-    if (bad == 0)
-      return;
     for (Index p : rows)
       if (!finite(column[p]))
         fail(step, kernel, field, ids[p], column[p]);

@@ -8,20 +8,11 @@
 namespace wash::openmp {
 
 /// Calls body(i) for every position in `rows` (the real particles), on all
-/// threads. Each call writes only particle i (the translator checked), so no
-/// atomics are needed, and the result does not depend on the thread count.
-/// Dynamic chunks even out uneven neighbour counts; particles are cell-sorted,
-/// so a chunk is a compact region.
-template <typename Body>
-inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  const std::size_t n = rows.size();
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::size_t k = 0; k < n; ++k)
-    body(rows[k]);
-}
-
-/// The same loop for a body that returns whether what it wrote is finite:
-/// returns whether every call did.
+/// threads; body returns whether what it wrote is finite, and the loop whether
+/// every call did. Each call writes only particle i (the translator checked),
+/// so no atomics are needed, and the result does not depend on the thread
+/// count. Dynamic chunks even out uneven neighbour counts; particles are
+/// cell-sorted, so a chunk is a compact region.
 template <typename Body>
 inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
   const std::size_t n = rows.size();
@@ -32,6 +23,15 @@ inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body
     all = all && finite;
   }
   return all;
+}
+
+/// The same loop for a body with nothing to report.
+template <typename Body>
+inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+  forEachParticleChecked(rows, [&body](backend::Index i) {
+    body(i);
+    return true;
+  });
 }
 
 } // namespace wash::openmp

@@ -7,21 +7,24 @@
 
 namespace wash::serial {
 
-/// Calls body(i) for every position in `rows` (the real particles), in order.
-template <typename Body>
-inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  for (backend::Index i : rows)
-    body(i);
-}
-
-/// The same loop for a body that returns whether what it wrote is finite:
-/// returns whether every call did.
+/// Calls body(i) for every position in `rows` (the real particles), in order;
+/// body returns whether what it wrote is finite, and the loop whether every
+/// call did.
 template <typename Body>
 inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
   bool all = true;
   for (backend::Index i : rows)
     all &= body(i);
   return all;
+}
+
+/// The same loop for a body with nothing to report.
+template <typename Body>
+inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+  forEachParticleChecked(rows, [&body](backend::Index i) {
+    body(i);
+    return true;
+  });
 }
 
 } // namespace wash::serial

@@ -23,15 +23,16 @@ void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
                       const std::string &Step, const std::string &Rows,
                       const std::string &Indent);
 
-/// The particle loop of kernel K (the Index-th) over `Rows`, with the
-/// forEachParticle of `LoopNamespace`, running `Call` for `self`. What the
+/// The particle loop of kernel K (the KernelIndex-th) over `Rows`, with the
+/// forEachParticle of `LoopNamespace`, calling `Callee` for `self` (and its
+/// neighbour list, for a force kernel). What the
 /// kernel writes is tested for finiteness in the loop, right after each call
 /// (no second pass over the columns); only if a value is not, the columns are
 /// scanned to name the first culprit, as emitFiniteChecks does. Positions are
 /// wrapped (periodic axes) in between, as before a scan.
-void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned Index, const CodePlan &Plan,
+void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned KernelIndex, const CodePlan &Plan,
                       const std::string &LoopNamespace, const std::string &Rows,
-                      const std::string &Call);
+                      const std::string &Callee);
 
 /// After a kernel that writes pos: wrap the positions of Rows on periodic axes.
 void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,
