@@ -29,6 +29,15 @@ inline constexpr std::size_t parallelMinimum = 32768;
 /// are reordered by cell; the id does not).
 using Index = std::uint32_t;
 
+/// A particle-loop body with nothing to report, as the body of a backend's
+/// forEachParticleChecked (whose body returns whether what it wrote is finite).
+template <typename Body> auto reportingNothing(Body &body) {
+  return [&body](Index i) {
+    body(i);
+    return true;
+  };
+}
+
 /// One property of every particle. Plain std::vector: contiguous, and
 /// operator[] compiles to a direct array access.
 template <typename T> using Column = std::vector<T>;

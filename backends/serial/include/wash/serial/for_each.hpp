@@ -21,10 +21,7 @@ inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body
 /// The same loop for a body with nothing to report.
 template <typename Body>
 inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  forEachParticleChecked(rows, [&body](backend::Index i) {
-    body(i);
-    return true;
-  });
+  forEachParticleChecked(rows, backend::reportingNothing(body));
 }
 
 } // namespace wash::serial
