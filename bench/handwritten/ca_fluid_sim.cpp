@@ -45,6 +45,11 @@
 //  * mass and smoothing_length are never written after creation: constants.
 //  * OpenMP `parallel for` over particles, dynamic schedule, no atomics.
 //
+// Built with -DHANDWRITTEN_SCALAR_TERMS (target ca_fluid_sim-handwritten-scalar)
+// the same program keeps its map passes scalar: g++ may not vectorise the loops
+// of calculateDensity and forceTerms. It measures what vectorising the terms
+// across neighbours is worth (docs/performance.md).
+//
 // Options: the wash program options (--steps, --out, --output-every, --format,
 // --dump, --quiet, --help; see docs/semantics.md) plus
 //   --size N         number of particles (default 4032, the seed's)
@@ -73,6 +78,12 @@
 #include <vector>
 
 namespace {
+
+#if defined(HANDWRITTEN_SCALAR_TERMS)
+#define TERMS_LOOPS __attribute__((optimize("no-tree-loop-vectorize")))
+#else
+#define TERMS_LOOPS
+#endif
 
 using wash::Vec2D;
 using wash::detail::Column;
@@ -448,7 +459,7 @@ inline std::uint32_t listNeighbours(const Grid &G, const double *px, const doubl
 }
 
 /// CalculateDensity, plus the per-particle pressures the pressure force reads.
-void calculateDensity(Particles &P, const Grid &G) {
+TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
   const std::size_t n = P.n;
   const double *px = P.px.data(), *py = P.py.data();
   double *rho = P.rho.data(), *nrho = P.nrho.data(), *pres = P.pres.data(),
@@ -483,7 +494,7 @@ void calculateDensity(Particles &P, const Grid &G) {
 }
 
 /// The terms of each neighbour in force_kernel (independent: vectorised).
-inline void forceTerms(std::uint32_t m, const std::uint64_t *__restrict nj,
+TERMS_LOOPS inline void forceTerms(std::uint32_t m, const std::uint64_t *__restrict nj,
                        const double *__restrict px, const double *__restrict py, const double x,
                        const double y, const double *__restrict nd2, const double *__restrict rho,
                        const double *__restrict nrho, const double *__restrict pres,
