@@ -10,6 +10,8 @@
 
 #include <filesystem>
 
+#include <unistd.h>
+
 using namespace wash;
 using detail::state;
 
@@ -21,10 +23,13 @@ ParticleVec along(double x) {
   return v;
 }
 
-/// Fresh runtime state with output going to a temporary directory.
+/// Fresh runtime state with output going to a temporary directory of the
+/// test's own: ctest runs the tests of this suite in parallel processes.
 struct ReferenceTest : ::testing::Test {
-  std::filesystem::path out = std::filesystem::temp_directory_path() /
-                              ("wash-reference-test-" + std::to_string(WASH_DIM) + "d");
+  std::filesystem::path out =
+      std::filesystem::temp_directory_path() /
+      ("wash-reference-test-" + std::to_string(WASH_DIM) + "d-" + std::to_string(::getpid()) +
+       "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   void SetUp() override {
     state() = detail::State{};
     state().options.quiet = true;
