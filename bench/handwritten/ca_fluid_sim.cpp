@@ -495,13 +495,14 @@ TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
 
 /// The terms of each neighbour in force_kernel (independent: vectorised).
 TERMS_LOOPS inline void forceTerms(std::uint32_t m, const std::uint64_t *__restrict nj,
-                       const double *__restrict px, const double *__restrict py, const double x,
-                       const double y, const double *__restrict nd2, const double *__restrict rho,
-                       const double *__restrict nrho, const double *__restrict pres,
-                       const double *__restrict npres, const double pressure,
-                       const double nearPressure, double *__restrict tx1,
-                       double *__restrict ty1, double *__restrict tx2, double *__restrict ty2,
-                       double *__restrict tw) {
+                                   const double *__restrict px, const double *__restrict py,
+                                   const double x, const double y, const double *__restrict nd2,
+                                   const double *__restrict rho, const double *__restrict nrho,
+                                   const double *__restrict pres, const double *__restrict npres,
+                                   const double pressure, const double nearPressure,
+                                   double *__restrict tx1, double *__restrict ty1,
+                                   double *__restrict tx2, double *__restrict ty2,
+                                   double *__restrict tw) {
   for (std::uint32_t k = 0; k < m; ++k) {
     const std::uint64_t j = nj[k];
     const double ox = px[j] - x, oy = py[j] - y; // offsetToNeighbour

@@ -28,8 +28,8 @@ ParticleVec along(double x) {
 struct ReferenceTest : ::testing::Test {
   std::filesystem::path out =
       std::filesystem::temp_directory_path() /
-      ("wash-reference-test-" + std::to_string(WASH_DIM) + "d-" + std::to_string(::getpid()) +
-       "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+      ("wash-reference-test-" + std::to_string(WASH_DIM) + "d-" + std::to_string(::getpid()) + "-" +
+       ::testing::UnitTest::GetInstance()->current_test_info()->name());
   void SetUp() override {
     state() = detail::State{};
     state().options.quiet = true;
