@@ -8,6 +8,7 @@
 #pragma once
 
 #include <wash/backend/cell_grid.hpp>
+#include <wash/backend/scan_avx2.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -96,11 +97,22 @@ private:
     for (int r = 0; r < ranges.count; ++r)
       candidates += ranges.end[r] - ranges.begin[r];
     std::vector<Ref> &buffer = threadBuffer();
-    if (buffer.size() < candidates)
-      buffer.resize(candidates);
+    if (buffer.size() < candidates + scanSlack)
+      buffer.resize(candidates + scanSlack); // the vector scan writes whole blocks
     Ref *out = buffer.data();
     std::size_t kept = 0;
     const PosT *p = pos.data();
+#if WASH_SCAN_AVX2
+    if constexpr (std::is_same_v<PosT, Vec<double, D>> && sizeof(Ref) == 8)
+      if (cpuHasAvx2()) { // four candidates at a time; it skips `self` itself
+        for (int r = 0; r < ranges.count; ++r)
+          kept = keepRowAvx2(p, pos.size(), centre, r2, ranges.begin[r], ranges.end[r], self, out,
+                             kept);
+        begin_ = out;
+        end_ = out + kept;
+        return;
+      }
+#endif
     for (int r = 0; r < ranges.count; ++r) {
       const Index b = ranges.begin[r], e = ranges.end[r];
       if (b <= self && self < e) { // skip the particle itself by splitting its row
@@ -118,8 +130,9 @@ private:
   static std::size_t keep(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
                           Index b, Index e, Ref *__restrict out, std::size_t kept) {
 #if defined(__GNUC__) // g++ and clang: vector extensions
-    if constexpr (D == 2 && std::is_same_v<PosT, Vec<double, 2>>)
+    if constexpr (D == 2 && std::is_same_v<PosT, Vec<double, 2>>) {
       return keepPlanar(p, centre, r2, b, e, out, kept);
+    }
 #endif
     for (Index j = b; j < e; ++j) {
       double d = double(p[j].at(0)) - centre.at(0);

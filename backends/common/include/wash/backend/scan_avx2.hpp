@@ -1,0 +1,164 @@
+//===- wash/backend/scan_avx2.hpp - the 2D neighbour test, four candidates at a time -*- C++
+//-*-===//
+//
+// Programs are built for the baseline x86-64 instruction set (SSE2), so that
+// they run on any x86-64 machine; on one with AVX2 the neighbour scan of 2D
+// double positions, the hottest loop of a search, takes this path instead,
+// chosen at run time. It computes the same squared distances (dx*dx + dy*dy,
+// lane by lane) and keeps the same candidates in the same order, so results do
+// not depend on the machine (test/backends/cell_grid_test.cpp compares both).
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/columns.hpp>
+#include <wash/vec.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+#if defined(__GNUC__) && defined(__x86_64__)
+#define WASH_SCAN_AVX2 1
+#include <immintrin.h>
+#else
+#define WASH_SCAN_AVX2 0
+#endif
+
+namespace wash::backend {
+
+/// Entries a scan may write past the last neighbour kept: its buffer needs
+/// room for the candidates plus this many.
+inline constexpr std::size_t scanSlack = 4;
+
+#if WASH_SCAN_AVX2
+
+/// Whether this machine runs AVX2 code (asked once).
+inline bool cpuHasAvx2() {
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return has;
+}
+
+/// For each 4-bit mask of kept candidates, the 32-bit lanes that move their
+/// 64-bit rows to the front, in order.
+struct ScanCompaction {
+  alignas(32) std::int32_t lanes[16][8];
+  constexpr ScanCompaction() : lanes{} {
+    for (int mask = 0; mask < 16; ++mask) {
+      int to = 0;
+      for (int from = 0; from < 4; ++from)
+        if (mask >> from & 1) {
+          lanes[mask][2 * to] = 2 * from;
+          lanes[mask][2 * to + 1] = 2 * from + 1;
+          ++to;
+        }
+    }
+  }
+};
+inline constexpr ScanCompaction scanCompaction{};
+
+/// Appends the candidates [b, e) other than `self` within sqrt(r2) of centre
+/// to out[kept..] as 64-bit rows, four candidates an iteration: squared
+/// distances in one AVX2 register, the test's outcomes as a mask (less lanes
+/// past e and the particle itself), the kept rows moved to the front of a
+/// block by a table and stored whole (hence scanSlack). A row's last block
+/// reads up to three positions past e, so `count`, the column's size, bounds
+/// the blocks; the few candidates that remain are tested one at a time.
+template <typename Ref>
+__attribute__((target("avx2"))) std::size_t
+keepRowAvx2(const Vec<double, 2> *__restrict p, std::size_t count, const Vec<double, 2> &centre,
+            double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
+  static_assert(sizeof(Ref) == 8 && std::is_trivially_copyable_v<Ref>, "64-bit rows");
+  static_assert(sizeof(Vec<double, 2>) == 16, "Vec<double, 2> is two doubles");
+  const double cx = centre.at(0), cy = centre.at(1);
+  const __m256d origin = _mm256_setr_pd(cx, cy, cx, cy);
+  const __m256d limit = _mm256_set1_pd(r2);
+  const __m256i steps = _mm256_setr_epi64x(0, 1, 2, 3);
+  const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
+  Index j = b;
+  for (; j < e && std::size_t(j) + 4 <= count; j += 4) {
+    const double *at = reinterpret_cast<const double *>(p + j);
+    __m256d first = _mm256_sub_pd(_mm256_loadu_pd(at), origin);      // dx0 dy0 dx1 dy1
+    __m256d second = _mm256_sub_pd(_mm256_loadu_pd(at + 4), origin); // dx2 dy2 dx3 dy3
+    first = _mm256_mul_pd(first, first);
+    second = _mm256_mul_pd(second, second);
+    const __m256d d2 = _mm256_hadd_pd(first, second); // d0 d2 d1 d3
+    const int lanes = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
+    const __m256i rows = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(j)), steps);
+    const int notSelf = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(rows, itself)));
+    const Index left = e - j;
+    const int inRow = left >= 4 ? 15 : (1 << left) - 1;
+    const int inOrder = (lanes & 9) | (lanes & 2) << 1 | (lanes & 4) >> 1; // d0 d1 d2 d3
+    const int mask = inOrder & notSelf & inRow;
+    const __m256i order =
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.lanes[mask]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(out + kept),
+                        _mm256_permutevar8x32_epi32(rows, order));
+    kept += std::size_t(__builtin_popcount(unsigned(mask)));
+  }
+  for (; j < e; ++j) { // at the column's end: the same test, one at a time
+    const double dx = p[j].at(0) - cx, dy = p[j].at(1) - cy;
+    out[kept].index = j;
+    kept += (dx * dx + dy * dy <= r2) & (j != self);
+  }
+  return kept;
+}
+
+/// keepRowAvx2 for 3D positions: four candidates are three registers of
+/// coordinates (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3), regrouped by axis;
+/// the squared distance is (dx*dx + dy*dy) + dz*dz, as the scalar scan sums.
+template <typename Ref>
+__attribute__((target("avx2"))) std::size_t
+keepRowAvx2(const Vec<double, 3> *__restrict p, std::size_t count, const Vec<double, 3> &centre,
+            double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
+  static_assert(sizeof(Ref) == 8 && std::is_trivially_copyable_v<Ref>, "64-bit rows");
+  static_assert(sizeof(Vec<double, 3>) == 24, "Vec<double, 3> is three doubles");
+  const double cx = centre.at(0), cy = centre.at(1), cz = centre.at(2);
+  const __m256d ox = _mm256_set1_pd(cx), oy = _mm256_set1_pd(cy), oz = _mm256_set1_pd(cz);
+  const __m256d limit = _mm256_set1_pd(r2);
+  const __m256i steps = _mm256_setr_epi64x(0, 1, 2, 3);
+  const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
+  Index j = b;
+  for (; j < e && std::size_t(j) + 4 <= count; j += 4) {
+    const double *at = reinterpret_cast<const double *>(p + j);
+    const __m256d a = _mm256_loadu_pd(at), m = _mm256_loadu_pd(at + 4), c = _mm256_loadu_pd(at + 8);
+    // x: a0 a3 m2 c1; y: a1 m0 m3 c2; z: a2 m1 c0 c3. A shuffle takes its low
+    // pair from the low halves of its sources and its high pair from the high
+    // halves, so each axis is a blend of two shuffles.
+    const __m256d am = _mm256_permute2f128_pd(a, m, 0x21); // a2 a3 m0 m1
+    const __m256d mc = _mm256_permute2f128_pd(m, c, 0x21); // m2 m3 c0 c1
+    const __m256d x =
+        _mm256_blend_pd(_mm256_shuffle_pd(a, am, 0x2), _mm256_shuffle_pd(m, mc, 0x8), 0xC);
+    const __m256d y =
+        _mm256_blend_pd(_mm256_shuffle_pd(a, m, 0x1), _mm256_shuffle_pd(m, c, 0x4), 0xC);
+    const __m256d z =
+        _mm256_blend_pd(_mm256_shuffle_pd(am, m, 0x2), _mm256_shuffle_pd(mc, c, 0x8), 0xC);
+    const __m256d dx = _mm256_sub_pd(x, ox), dy = _mm256_sub_pd(y, oy), dz = _mm256_sub_pd(z, oz);
+    const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                                     _mm256_mul_pd(dz, dz));
+    const int lanes = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
+    const __m256i rows = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(j)), steps);
+    const int notSelf = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(rows, itself)));
+    const Index left = e - j;
+    const int inRow = left >= 4 ? 15 : (1 << left) - 1;
+    const int mask = lanes & notSelf & inRow;
+    const __m256i order =
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.lanes[mask]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(out + kept),
+                        _mm256_permutevar8x32_epi32(rows, order));
+    kept += std::size_t(__builtin_popcount(unsigned(mask)));
+  }
+  for (; j < e; ++j) { // at the column's end: the same test, one at a time
+    const double dx = p[j].at(0) - cx, dy = p[j].at(1) - cy, dz = p[j].at(2) - cz;
+    out[kept].index = j;
+    kept += (dx * dx + dy * dy + dz * dz <= r2) & (j != self);
+  }
+  return kept;
+}
+
+#endif
+
+} // namespace wash::backend

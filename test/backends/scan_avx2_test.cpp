@@ -1,0 +1,106 @@
+// The AVX2 neighbour scan must keep exactly the candidates the scalar scan
+// keeps, in the same order: the same squared distances, ties at the radius
+// included, the particle itself left out, rows ending anywhere in a block and
+// at the end of the column. (Neighbours and the reference agree in
+// cell_grid_test.cpp, which on an AVX2 machine runs this path too.)
+#include <wash/backend/neighbours.hpp>
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+using namespace wash::backend;
+
+#if WASH_SCAN_AVX2
+
+namespace {
+
+using Row = NeighbourRefOf<std::uint64_t>;
+
+/// The scalar test, written out: d2 = (dx*dx + dy*dy) [+ dz*dz] <= r2.
+template <int D>
+std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<double, D>> &p,
+                                     const wash::Vec<double, D> &c, double r2, Index b, Index e,
+                                     Index self) {
+  std::vector<std::uint64_t> kept;
+  for (Index j = b; j < e; ++j) {
+    double d = p[j].at(0) - c.at(0);
+    double d2 = d * d;
+    for (int a = 1; a < D; ++a) {
+      d = p[j].at(a) - c.at(a);
+      d2 += d * d;
+    }
+    if (j != self && d2 <= r2)
+      kept.push_back(j);
+  }
+  return kept;
+}
+
+template <int D>
+std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<double, D>> &p,
+                                   const wash::Vec<double, D> &c, double r2, Index b, Index e,
+                                   Index self) {
+  std::vector<Row> out(e - b + scanSlack);
+  const std::size_t kept = keepRowAvx2(p.data(), p.size(), c, r2, b, e, self, out.data(), 0);
+  std::vector<std::uint64_t> rows;
+  for (std::size_t k = 0; k < kept; ++k)
+    rows.push_back(out[k].index);
+  return rows;
+}
+
+/// Points on a lattice of spacing 0.25 (exact in binary), so that many lie
+/// exactly at the radius 0.5 from the centre, which is a lattice point too.
+template <int D> std::vector<wash::Vec<double, D>> lattice(unsigned seed, int n) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> step(-3, 3);
+  std::vector<wash::Vec<double, D>> p(n);
+  for (auto &v : p)
+    for (int a = 0; a < D; ++a)
+      *v[a] = 0.25 * step(rng);
+  return p;
+}
+
+template <int D> void compareRows(unsigned seed) {
+  const std::vector<wash::Vec<double, D>> p = lattice<D>(seed, 37);
+  const Index n = Index(p.size());
+  int compared = 0;
+  for (Index b = 0; b < n; b += 3)
+    for (Index e = b; e <= n; ++e)
+      for (Index self : {b, Index(b + 1), Index(b + 2), Index(b + 3), Index(e - 1), n}) {
+        const wash::Vec<double, D> c = p[(b * 7 + e) % n];
+        ASSERT_EQ((avx2Row<D>(p, c, 0.25, b, e, self)), (scalarRow<D>(p, c, 0.25, b, e, self)))
+            << "rows [" << b << ", " << e << "), self " << self;
+        ++compared;
+      }
+  EXPECT_GT(compared, 1000);
+}
+
+} // namespace
+
+TEST(ScanAvx2, KeepsWhatTheScalarScanKeepsIn2D) {
+  if (!cpuHasAvx2())
+    GTEST_SKIP() << "this machine has no AVX2: generated programs scan without it";
+  compareRows<2>(1);
+  compareRows<2>(2);
+}
+
+TEST(ScanAvx2, KeepsWhatTheScalarScanKeepsIn3D) {
+  if (!cpuHasAvx2())
+    GTEST_SKIP() << "this machine has no AVX2: generated programs scan without it";
+  compareRows<3>(3);
+  compareRows<3>(4);
+}
+
+TEST(ScanAvx2, LatticeHasTiesAtTheRadius) { // the comparisons above test `<=`, not only `<`
+  const auto p = lattice<2>(1, 37);
+  int ties = 0;
+  for (const auto &a : p)
+    for (const auto &b : p) {
+      const double dx = a.at(0) - b.at(0), dy = a.at(1) - b.at(1);
+      ties += dx * dx + dy * dy == 0.25;
+    }
+  EXPECT_GT(ties, 0);
+}
+
+#endif
