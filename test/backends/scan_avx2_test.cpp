@@ -16,8 +16,6 @@ using namespace wash::backend;
 
 namespace {
 
-using Row = NeighbourRefOf<std::uint64_t>;
-
 /// The scalar test, written out: d2 = (dx*dx + dy*dy) [+ dz*dz] <= r2.
 template <int D>
 std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<double, D>> &p,
@@ -37,7 +35,9 @@ std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<double, D>> &p,
   return kept;
 }
 
-template <int D>
+/// The AVX2 scan's rows, written as Row (64-bit per-particle lists or 32-bit
+/// stored ones).
+template <int D, typename Row>
 std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<double, D>> &p,
                                    const wash::Vec<double, D> &c, double r2, Index b, Index e,
                                    Index self) {
@@ -69,8 +69,11 @@ template <int D> void compareRows(unsigned seed) {
     for (Index e = b; e <= n; ++e)
       for (Index self : {b, Index(b + 1), Index(b + 2), Index(b + 3), Index(e - 1), n}) {
         const wash::Vec<double, D> c = p[(b * 7 + e) % n];
-        ASSERT_EQ((avx2Row<D>(p, c, 0.25, b, e, self)), (scalarRow<D>(p, c, 0.25, b, e, self)))
-            << "rows [" << b << ", " << e << "), self " << self;
+        const std::vector<std::uint64_t> expected = scalarRow<D>(p, c, 0.25, b, e, self);
+        ASSERT_EQ((avx2Row<D, NeighbourRef>(p, c, 0.25, b, e, self)), expected)
+            << "64-bit rows [" << b << ", " << e << "), self " << self;
+        ASSERT_EQ((avx2Row<D, StoredNeighbourRef>(p, c, 0.25, b, e, self)), expected)
+            << "32-bit rows [" << b << ", " << e << "), self " << self;
         ++compared;
       }
   EXPECT_GT(compared, 1000);

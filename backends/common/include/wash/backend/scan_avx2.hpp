@@ -1,12 +1,12 @@
-//===- wash/backend/scan_avx2.hpp - the 2D neighbour test, four candidates at a time -*- C++
-//-*-===//
+//===- wash/backend/scan_avx2.hpp - the neighbour test, four at a time -*- C++ -*-===//
 //
 // Programs are built for the baseline x86-64 instruction set (SSE2), so that
-// they run on any x86-64 machine; on one with AVX2 the neighbour scan of 2D
-// double positions, the hottest loop of a search, takes this path instead,
-// chosen at run time. It computes the same squared distances (dx*dx + dy*dy,
-// lane by lane) and keeps the same candidates in the same order, so results do
-// not depend on the machine (test/backends/cell_grid_test.cpp compares both).
+// they run on any x86-64 machine; on one with AVX2, the neighbour scan of
+// double positions (2D and 3D), the hottest loop of a search, takes this path
+// instead, chosen at run time. It computes the same squared distances
+// ((dx*dx + dy*dy) + dz*dz, lane by lane) and keeps the same candidates in the
+// same order, so results do not depend on the machine
+// (test/backends/scan_avx2_test.cpp compares it with the scalar test).
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -43,16 +43,19 @@ inline bool cpuHasAvx2() {
 }
 
 /// For each 4-bit mask of kept candidates, the 32-bit lanes that move their
-/// 64-bit rows to the front, in order.
+/// rows (64-bit lanes of a register) to the front, in order: whole rows for
+/// 64-bit lists, their low halves for 32-bit ones.
 struct ScanCompaction {
-  alignas(32) std::int32_t lanes[16][8];
-  constexpr ScanCompaction() : lanes{} {
+  alignas(32) std::int32_t wide[16][8];
+  alignas(32) std::int32_t narrow[16][8];
+  constexpr ScanCompaction() : wide{}, narrow{} {
     for (int mask = 0; mask < 16; ++mask) {
       int to = 0;
       for (int from = 0; from < 4; ++from)
         if (mask >> from & 1) {
-          lanes[mask][2 * to] = 2 * from;
-          lanes[mask][2 * to + 1] = 2 * from + 1;
+          wide[mask][2 * to] = 2 * from;
+          wide[mask][2 * to + 1] = 2 * from + 1;
+          narrow[mask][to] = 2 * from;
           ++to;
         }
     }
@@ -60,44 +63,65 @@ struct ScanCompaction {
 };
 inline constexpr ScanCompaction scanCompaction{};
 
+/// Stores the rows of `rows` (four 64-bit lanes) that `mask` keeps at `to`, in
+/// order, as Ref; writes a whole block of four Refs.
+template <typename Ref>
+__attribute__((target("avx2"))) inline void storeKept(Ref *to, __m256i rows, int mask) {
+  static_assert((sizeof(Ref) == 8 || sizeof(Ref) == 4) && std::is_trivially_copyable_v<Ref>,
+                "32- or 64-bit rows");
+  if constexpr (sizeof(Ref) == 8) {
+    const __m256i order =
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.wide[mask]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i *>(to), _mm256_permutevar8x32_epi32(rows, order));
+  } else {
+    const __m256i order =
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.narrow[mask]));
+    _mm_storeu_si128(reinterpret_cast<__m128i *>(to),
+                     _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(rows, order)));
+  }
+}
+
+/// The candidates of one block of four (rows, their squared distances d2) that
+/// pass the test, less the particle itself and the lanes past the row's end
+/// (`left` candidates remain in the row), stored at out[kept..]; the new count.
+template <typename Ref>
+__attribute__((target("avx2"))) inline std::size_t keepBlock(Ref *out, std::size_t kept, __m256d d2,
+                                                             __m256d limit, __m256i rows,
+                                                             __m256i itself, Index left) {
+  const int near = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
+  const int other = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(rows, itself)));
+  const int mask = near & other & (left >= 4 ? 15 : (1 << left) - 1);
+  storeKept(out + kept, rows, mask);
+  return kept + std::size_t(__builtin_popcount(unsigned(mask)));
+}
+
 /// Appends the candidates [b, e) other than `self` within sqrt(r2) of centre
-/// to out[kept..] as 64-bit rows, four candidates an iteration: squared
-/// distances in one AVX2 register, the test's outcomes as a mask (less lanes
-/// past e and the particle itself), the kept rows moved to the front of a
-/// block by a table and stored whole (hence scanSlack). A row's last block
+/// to out[kept..], four candidates an iteration: their squared distances in
+/// one AVX2 register, the test's outcomes as a mask, the kept rows moved to
+/// the front of a block by a table and stored whole (hence scanSlack). A row's last block
 /// reads up to three positions past e, so `count`, the column's size, bounds
 /// the blocks; the few candidates that remain are tested one at a time.
 template <typename Ref>
 __attribute__((target("avx2"))) std::size_t
 keepRowAvx2(const Vec<double, 2> *__restrict p, std::size_t count, const Vec<double, 2> &centre,
             double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
-  static_assert(sizeof(Ref) == 8 && std::is_trivially_copyable_v<Ref>, "64-bit rows");
   static_assert(sizeof(Vec<double, 2>) == 16, "Vec<double, 2> is two doubles");
   const double cx = centre.at(0), cy = centre.at(1);
   const __m256d origin = _mm256_setr_pd(cx, cy, cx, cy);
   const __m256d limit = _mm256_set1_pd(r2);
-  const __m256i steps = _mm256_setr_epi64x(0, 1, 2, 3);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
+  const __m256i four = _mm256_set1_epi64x(4);
+  __m256i rows =
+      _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)), _mm256_setr_epi64x(0, 1, 2, 3));
   Index j = b;
-  for (; j < e && std::size_t(j) + 4 <= count; j += 4) {
+  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four)) {
     const double *at = reinterpret_cast<const double *>(p + j);
     __m256d first = _mm256_sub_pd(_mm256_loadu_pd(at), origin);      // dx0 dy0 dx1 dy1
     __m256d second = _mm256_sub_pd(_mm256_loadu_pd(at + 4), origin); // dx2 dy2 dx3 dy3
     first = _mm256_mul_pd(first, first);
     second = _mm256_mul_pd(second, second);
-    const __m256d d2 = _mm256_hadd_pd(first, second); // d0 d2 d1 d3
-    const int lanes = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
-    const __m256i rows = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(j)), steps);
-    const int notSelf = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(rows, itself)));
-    const Index left = e - j;
-    const int inRow = left >= 4 ? 15 : (1 << left) - 1;
-    const int inOrder = (lanes & 9) | (lanes & 2) << 1 | (lanes & 4) >> 1; // d0 d1 d2 d3
-    const int mask = inOrder & notSelf & inRow;
-    const __m256i order =
-        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.lanes[mask]));
-    _mm256_storeu_si256(reinterpret_cast<__m256i *>(out + kept),
-                        _mm256_permutevar8x32_epi32(rows, order));
-    kept += std::size_t(__builtin_popcount(unsigned(mask)));
+    const __m256d d2 = _mm256_permute4x64_pd(_mm256_hadd_pd(first, second), 0xD8); // d0 .. d3
+    kept = keepBlock(out, kept, d2, limit, rows, itself, e - j);
   }
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     const double dx = p[j].at(0) - cx, dy = p[j].at(1) - cy;
@@ -114,15 +138,16 @@ template <typename Ref>
 __attribute__((target("avx2"))) std::size_t
 keepRowAvx2(const Vec<double, 3> *__restrict p, std::size_t count, const Vec<double, 3> &centre,
             double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
-  static_assert(sizeof(Ref) == 8 && std::is_trivially_copyable_v<Ref>, "64-bit rows");
   static_assert(sizeof(Vec<double, 3>) == 24, "Vec<double, 3> is three doubles");
   const double cx = centre.at(0), cy = centre.at(1), cz = centre.at(2);
   const __m256d ox = _mm256_set1_pd(cx), oy = _mm256_set1_pd(cy), oz = _mm256_set1_pd(cz);
   const __m256d limit = _mm256_set1_pd(r2);
-  const __m256i steps = _mm256_setr_epi64x(0, 1, 2, 3);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
+  const __m256i four = _mm256_set1_epi64x(4);
+  __m256i rows =
+      _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)), _mm256_setr_epi64x(0, 1, 2, 3));
   Index j = b;
-  for (; j < e && std::size_t(j) + 4 <= count; j += 4) {
+  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four)) {
     const double *at = reinterpret_cast<const double *>(p + j);
     const __m256d a = _mm256_loadu_pd(at), m = _mm256_loadu_pd(at + 4), c = _mm256_loadu_pd(at + 8);
     // x: a0 a3 m2 c1; y: a1 m0 m3 c2; z: a2 m1 c0 c3. A shuffle takes its low
@@ -139,17 +164,7 @@ keepRowAvx2(const Vec<double, 3> *__restrict p, std::size_t count, const Vec<dou
     const __m256d dx = _mm256_sub_pd(x, ox), dy = _mm256_sub_pd(y, oy), dz = _mm256_sub_pd(z, oz);
     const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
                                      _mm256_mul_pd(dz, dz));
-    const int lanes = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
-    const __m256i rows = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(j)), steps);
-    const int notSelf = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(rows, itself)));
-    const Index left = e - j;
-    const int inRow = left >= 4 ? 15 : (1 << left) - 1;
-    const int mask = lanes & notSelf & inRow;
-    const __m256i order =
-        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.lanes[mask]));
-    _mm256_storeu_si256(reinterpret_cast<__m256i *>(out + kept),
-                        _mm256_permutevar8x32_epi32(rows, order));
-    kept += std::size_t(__builtin_popcount(unsigned(mask)));
+    kept = keepBlock(out, kept, d2, limit, rows, itself, e - j);
   }
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     const double dx = p[j].at(0) - cx, dy = p[j].at(1) - cy, dz = p[j].at(2) - cz;
