@@ -65,6 +65,10 @@
 
 #include <omp.h>
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -433,12 +437,82 @@ inline std::uint32_t scanRange(const double *__restrict px, const double *__rest
   return m;
 }
 
+#if defined(__GNUC__) && defined(__x86_64__)
+#define HANDWRITTEN_AVX2 1
+/// Whether this machine runs AVX2 code. The program is built for baseline
+/// x86-64 like every wash program; the scan takes the AVX2 path at run time,
+/// as the generated programs' runtime does (backends/.../scan_avx2.hpp).
+bool hasAvx2() {
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2") != 0;
+  }();
+  return has;
+}
+
+/// Per 4-bit mask of kept lanes, the 32-bit lanes that bring the kept 64-bit
+/// values to the front in order.
+struct KeptFirst {
+  alignas(32) std::int32_t lanes[16][8] = {};
+  KeptFirst() {
+    for (int mask = 0; mask < 16; ++mask)
+      for (int lane = 0, next = 0; lane < 4; ++lane)
+        if (mask & (1 << lane)) {
+          lanes[mask][next++] = 2 * lane;
+          lanes[mask][next++] = 2 * lane + 1;
+        }
+  }
+};
+const KeptFirst keptFirst;
+
+/// scanRange over a whole stencil row, four candidates an iteration, leaving
+/// out particle i by a lane mask instead of splitting the row. A block may read
+/// up to three entries past e (n bounds that); the same d2 = dx*dx + dy*dy.
+template <bool WithIndex>
+__attribute__((target("avx2"))) std::uint32_t
+scanRowAvx2(const double *__restrict px, const double *__restrict py, std::size_t n, double x,
+            double y, std::uint32_t b, std::uint32_t e, std::uint32_t i,
+            std::uint64_t *__restrict jout, double *__restrict d2out, std::uint32_t m) {
+  const __m256d cx = _mm256_set1_pd(x), cy = _mm256_set1_pd(y), limit = _mm256_set1_pd(r2);
+  const __m256i self = _mm256_set1_epi64x(i), four = _mm256_set1_epi64x(4);
+  __m256i index = _mm256_add_epi64(_mm256_set1_epi64x(b), _mm256_setr_epi64x(0, 1, 2, 3));
+  std::uint32_t j = b;
+  for (; j < e && j + 4 <= n; j += 4, index = _mm256_add_epi64(index, four)) {
+    const __m256d ox = _mm256_sub_pd(_mm256_loadu_pd(px + j), cx);
+    const __m256d oy = _mm256_sub_pd(_mm256_loadu_pd(py + j), cy);
+    const __m256d d2 = _mm256_add_pd(_mm256_mul_pd(ox, ox), _mm256_mul_pd(oy, oy));
+    const int near = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
+    const int other = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(index, self)));
+    const int kept = near & other & (e - j >= 4 ? 15 : (1 << (e - j)) - 1);
+    const __m256i front =
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(keptFirst.lanes[kept]));
+    _mm256_storeu_pd(d2out + m, _mm256_castsi256_pd(_mm256_permutevar8x32_epi32(
+                                    _mm256_castpd_si256(d2), front)));
+    if constexpr (WithIndex)
+      _mm256_storeu_si256(reinterpret_cast<__m256i *>(jout + m),
+                          _mm256_permutevar8x32_epi32(index, front));
+    m += std::uint32_t(__builtin_popcount(unsigned(kept)));
+  }
+  for (; j < e; ++j) { // the column's last few
+    const double ox = px[j] - x, oy = py[j] - y;
+    const double d2 = ox * ox + oy * oy;
+    d2out[m] = d2;
+    if constexpr (WithIndex)
+      jout[m] = j;
+    m += std::uint32_t(d2 <= r2 && j != i);
+  }
+  return m;
+}
+#else
+#define HANDWRITTEN_AVX2 0
+#endif
+
 /// The neighbours of particle i, in canonical order: squared distances and, if
 /// WithIndex, indices (the density needs no more than the distances; the force
 /// kernels recompute the offsets, an exact subtraction, from the indices).
 template <bool WithIndex>
 inline std::uint32_t listNeighbours(const Grid &G, const double *px, const double *py,
-                                    std::uint32_t i, NeighbourList &L) {
+                                    std::size_t n, std::uint32_t i, NeighbourList &L) {
   const double x = px[i], y = py[i];
   Rows R;
   stencilRows(G, x, y, R);
@@ -446,6 +520,13 @@ inline std::uint32_t listNeighbours(const Grid &G, const double *px, const doubl
   std::uint32_t m = 0;
   std::uint64_t *jout = L.j.data();
   double *d2out = L.d2.data();
+#if HANDWRITTEN_AVX2
+  if (hasAvx2()) {
+    for (int row = 0; row < R.count; ++row)
+      m = scanRowAvx2<WithIndex>(px, py, n, x, y, R.b[row], R.e[row], i, jout, d2out, m);
+    return m;
+  }
+#endif
   for (int row = 0; row < R.count; ++row) {
     const std::uint32_t b = R.b[row], e = R.e[row];
     if (b <= i && i < e) { // the particle itself: skipped by splitting the range
@@ -469,7 +550,7 @@ TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
     NeighbourList L;
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t m = listNeighbours<false>(G, px, py, std::uint32_t(i), L);
+      const std::uint32_t m = listNeighbours<false>(G, px, py, n, std::uint32_t(i), L);
       const double *d2 = L.d2.data();
       double *dk = L.t0.data(), *ndk = L.t1.data();
       for (std::uint32_t k = 0; k < m; ++k) { // map
@@ -544,7 +625,7 @@ void forceAndUpdate(Particles &P, const Grid &G, const Scene &scene) {
     NeighbourList L;
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i) {
-      const std::uint32_t m = listNeighbours<true>(G, px, py, std::uint32_t(i), L);
+      const std::uint32_t m = listNeighbours<true>(G, px, py, n, std::uint32_t(i), L);
       const std::uint64_t *__restrict nj = L.j.data();
       const double *__restrict nd2 = L.d2.data();
       double *__restrict tx1 = L.t0.data(), *__restrict ty1 = L.t1.data(),
