@@ -104,7 +104,7 @@ private:
     const PosT *p = pos.data();
 #if WASH_SCAN_AVX2
     if constexpr (std::is_same_v<PosT, Vec<double, D>>)
-      if (cpuHasAvx2()) { // four candidates at a time; it skips `self` itself
+      if (avx2Scan()) { // four candidates at a time; it skips `self` itself
         for (int r = 0; r < ranges.count; ++r)
           kept = keepRowAvx2(p, pos.size(), centre, r2, ranges.begin[r], ranges.end[r], self, out,
                              kept);

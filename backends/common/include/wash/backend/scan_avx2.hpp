@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <type_traits>
 
 #if defined(__GNUC__) && defined(__x86_64__)
@@ -33,13 +34,15 @@ inline constexpr std::size_t scanSlack = 4;
 
 #if WASH_SCAN_AVX2
 
-/// Whether this machine runs AVX2 code (asked once).
-inline bool cpuHasAvx2() {
-  static const bool has = [] {
+/// Whether scans take the AVX2 path: on a machine that has it, unless the
+/// environment sets WASH_SCALAR_SCAN (to check that results do not depend on
+/// the path; tests also switch it here).
+inline bool &avx2Scan() {
+  static bool use = [] {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0;
+    return __builtin_cpu_supports("avx2") != 0 && !std::getenv("WASH_SCALAR_SCAN");
   }();
-  return has;
+  return use;
 }
 
 /// For each 4-bit mask of kept candidates, the 32-bit lanes that move their
