@@ -25,7 +25,10 @@
 //    splitting its row's range, not tested for. CalculateDensity scans once;
 //    force_kernel scans once for both its loops (pressure and viscosity) and
 //    computes each neighbour's distance (one sqrt) once for both. There are no
-//    stored neighbour lists: one particle's at a time per thread.
+//    stored neighbour lists: one particle's at a time per thread. On a machine
+//    with AVX2 (checked at run time, as the generated programs' runtime does)
+//    the scan tests four candidates at a time and skips the particle by a lane
+//    mask instead.
 //  * each loop over the list is split in a "map" pass, which computes every
 //    neighbour's terms (sqrt, the six divisions of the pressure force, the
 //    kernels' branches as selects) into per-thread arrays with independent
@@ -420,7 +423,8 @@ inline void stencilRows(const Grid &G, double x, double y, Rows &R) {
 /// Appends to the list the candidates [b, e) within the radius of (x, y):
 /// their squared distance and, if WithIndex, their index. Branch-free: the
 /// entry is always written, and kept (the count advanced) if it passes the
-/// test. (A two-lane SSE2 version of this loop was no faster.)
+/// test. (A two-lane SSE2 version of this loop was no faster; on AVX2
+/// machines scanRowAvx2 below replaces it.)
 template <bool WithIndex>
 inline std::uint32_t scanRange(const double *__restrict px, const double *__restrict py, double x,
                                double y, std::uint32_t b, std::uint32_t e,
