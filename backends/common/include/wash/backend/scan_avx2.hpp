@@ -98,81 +98,75 @@ __attribute__((target("avx2"))) inline std::size_t keepBlock(Ref *out, std::size
   return kept + std::size_t(__builtin_popcount(unsigned(mask)));
 }
 
+/// The squared distances from centre of the four candidates from p[j] on,
+/// (dx*dx + dy*dy) lane by lane: two registers of (x, y) pairs, added
+/// pairwise and put back in candidate order.
+__attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 2> *p, Index j,
+                                                              const Vec<double, 2> &centre) {
+  static_assert(sizeof(Vec<double, 2>) == 16, "Vec<double, 2> is two doubles");
+  const __m256d origin = _mm256_setr_pd(centre.at(0), centre.at(1), centre.at(0), centre.at(1));
+  const double *at = reinterpret_cast<const double *>(p + j);
+  __m256d first = _mm256_sub_pd(_mm256_loadu_pd(at), origin);      // dx0 dy0 dx1 dy1
+  __m256d second = _mm256_sub_pd(_mm256_loadu_pd(at + 4), origin); // dx2 dy2 dx3 dy3
+  first = _mm256_mul_pd(first, first);
+  second = _mm256_mul_pd(second, second);
+  return _mm256_permute4x64_pd(_mm256_hadd_pd(first, second), 0xD8); // d0 d2 d1 d3 -> d0 .. d3
+}
+
+/// The same in 3D, (dx*dx + dy*dy) + dz*dz: the four candidates' coordinates
+/// are three registers (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3), regrouped by
+/// axis first.
+__attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 3> *p, Index j,
+                                                              const Vec<double, 3> &centre) {
+  static_assert(sizeof(Vec<double, 3>) == 24, "Vec<double, 3> is three doubles");
+  const double *at = reinterpret_cast<const double *>(p + j);
+  const __m256d a = _mm256_loadu_pd(at), m = _mm256_loadu_pd(at + 4), c = _mm256_loadu_pd(at + 8);
+  // x: a0 a3 m2 c1; y: a1 m0 m3 c2; z: a2 m1 c0 c3. A shuffle takes its low
+  // pair from the low halves of its sources and its high pair from the high
+  // halves, so each axis is a blend of two shuffles.
+  const __m256d am = _mm256_permute2f128_pd(a, m, 0x21); // a2 a3 m0 m1
+  const __m256d mc = _mm256_permute2f128_pd(m, c, 0x21); // m2 m3 c0 c1
+  const __m256d x =
+      _mm256_blend_pd(_mm256_shuffle_pd(a, am, 0x2), _mm256_shuffle_pd(m, mc, 0x8), 0xC);
+  const __m256d y =
+      _mm256_blend_pd(_mm256_shuffle_pd(a, m, 0x1), _mm256_shuffle_pd(m, c, 0x4), 0xC);
+  const __m256d z =
+      _mm256_blend_pd(_mm256_shuffle_pd(am, m, 0x2), _mm256_shuffle_pd(mc, c, 0x8), 0xC);
+  const __m256d dx = _mm256_sub_pd(x, _mm256_set1_pd(centre.at(0)));
+  const __m256d dy = _mm256_sub_pd(y, _mm256_set1_pd(centre.at(1)));
+  const __m256d dz = _mm256_sub_pd(z, _mm256_set1_pd(centre.at(2)));
+  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
+                       _mm256_mul_pd(dz, dz));
+}
+
 /// Appends the candidates [b, e) other than `self` within sqrt(r2) of centre
 /// to out[kept..], four candidates an iteration: their squared distances in
 /// one AVX2 register, the test's outcomes as a mask, the kept rows moved to
-/// the front of a block by a table and stored whole (hence scanSlack). A row's last block
-/// reads up to three positions past e, so `count`, the column's size, bounds
-/// the blocks; the few candidates that remain are tested one at a time.
-template <typename Ref>
+/// the front of a block by a table and stored whole (hence scanSlack). A row's
+/// last block reads up to three positions past e, so `count`, the column's
+/// size, bounds the blocks; the few candidates that remain are tested one at a
+/// time.
+template <int D, typename Ref>
 __attribute__((target("avx2"))) std::size_t
-keepRowAvx2(const Vec<double, 2> *__restrict p, std::size_t count, const Vec<double, 2> &centre,
+keepRowAvx2(const Vec<double, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
             double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
-  static_assert(sizeof(Vec<double, 2>) == 16, "Vec<double, 2> is two doubles");
-  const double cx = centre.at(0), cy = centre.at(1);
-  const __m256d origin = _mm256_setr_pd(cx, cy, cx, cy);
   const __m256d limit = _mm256_set1_pd(r2);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
   const __m256i four = _mm256_set1_epi64x(4);
   __m256i rows =
       _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)), _mm256_setr_epi64x(0, 1, 2, 3));
   Index j = b;
-  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four)) {
-    const double *at = reinterpret_cast<const double *>(p + j);
-    __m256d first = _mm256_sub_pd(_mm256_loadu_pd(at), origin);      // dx0 dy0 dx1 dy1
-    __m256d second = _mm256_sub_pd(_mm256_loadu_pd(at + 4), origin); // dx2 dy2 dx3 dy3
-    first = _mm256_mul_pd(first, first);
-    second = _mm256_mul_pd(second, second);
-    const __m256d d2 = _mm256_permute4x64_pd(_mm256_hadd_pd(first, second), 0xD8); // d0 .. d3
-    kept = keepBlock(out, kept, d2, limit, rows, itself, e - j);
-  }
+  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
+    kept = keepBlock(out, kept, blockDistances(p, j, centre), limit, rows, itself, e - j);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
-    const double dx = p[j].at(0) - cx, dy = p[j].at(1) - cy;
+    double d = p[j].at(0) - centre.at(0);
+    double d2 = d * d;
+    for (int a = 1; a < D; ++a) {
+      d = p[j].at(a) - centre.at(a);
+      d2 += d * d;
+    }
     out[kept].index = j;
-    kept += (dx * dx + dy * dy <= r2) & (j != self);
-  }
-  return kept;
-}
-
-/// keepRowAvx2 for 3D positions: four candidates are three registers of
-/// coordinates (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3), regrouped by axis;
-/// the squared distance is (dx*dx + dy*dy) + dz*dz, as the scalar scan sums.
-template <typename Ref>
-__attribute__((target("avx2"))) std::size_t
-keepRowAvx2(const Vec<double, 3> *__restrict p, std::size_t count, const Vec<double, 3> &centre,
-            double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
-  static_assert(sizeof(Vec<double, 3>) == 24, "Vec<double, 3> is three doubles");
-  const double cx = centre.at(0), cy = centre.at(1), cz = centre.at(2);
-  const __m256d ox = _mm256_set1_pd(cx), oy = _mm256_set1_pd(cy), oz = _mm256_set1_pd(cz);
-  const __m256d limit = _mm256_set1_pd(r2);
-  const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
-  const __m256i four = _mm256_set1_epi64x(4);
-  __m256i rows =
-      _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)), _mm256_setr_epi64x(0, 1, 2, 3));
-  Index j = b;
-  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four)) {
-    const double *at = reinterpret_cast<const double *>(p + j);
-    const __m256d a = _mm256_loadu_pd(at), m = _mm256_loadu_pd(at + 4), c = _mm256_loadu_pd(at + 8);
-    // x: a0 a3 m2 c1; y: a1 m0 m3 c2; z: a2 m1 c0 c3. A shuffle takes its low
-    // pair from the low halves of its sources and its high pair from the high
-    // halves, so each axis is a blend of two shuffles.
-    const __m256d am = _mm256_permute2f128_pd(a, m, 0x21); // a2 a3 m0 m1
-    const __m256d mc = _mm256_permute2f128_pd(m, c, 0x21); // m2 m3 c0 c1
-    const __m256d x =
-        _mm256_blend_pd(_mm256_shuffle_pd(a, am, 0x2), _mm256_shuffle_pd(m, mc, 0x8), 0xC);
-    const __m256d y =
-        _mm256_blend_pd(_mm256_shuffle_pd(a, m, 0x1), _mm256_shuffle_pd(m, c, 0x4), 0xC);
-    const __m256d z =
-        _mm256_blend_pd(_mm256_shuffle_pd(am, m, 0x2), _mm256_shuffle_pd(mc, c, 0x8), 0xC);
-    const __m256d dx = _mm256_sub_pd(x, ox), dy = _mm256_sub_pd(y, oy), dz = _mm256_sub_pd(z, oz);
-    const __m256d d2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
-                                     _mm256_mul_pd(dz, dz));
-    kept = keepBlock(out, kept, d2, limit, rows, itself, e - j);
-  }
-  for (; j < e; ++j) { // at the column's end: the same test, one at a time
-    const double dx = p[j].at(0) - cx, dy = p[j].at(1) - cy, dz = p[j].at(2) - cz;
-    out[kept].index = j;
-    kept += (dx * dx + dy * dy + dz * dz <= r2) & (j != self);
+    kept += (d2 <= r2) & (j != self);
   }
   return kept;
 }
