@@ -130,9 +130,8 @@ private:
   static std::size_t keep(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
                           Index b, Index e, Ref *__restrict out, std::size_t kept) {
 #if defined(__GNUC__) // g++ and clang: vector extensions
-    if constexpr (D == 2 && std::is_same_v<PosT, Vec<double, 2>>) {
+    if constexpr (D == 2 && std::is_same_v<PosT, Vec<double, 2>>)
       return keepPlanar(p, centre, r2, b, e, out, kept);
-    }
 #endif
     for (Index j = b; j < e; ++j) {
       double d = double(p[j].at(0)) - centre.at(0);
