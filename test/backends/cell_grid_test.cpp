@@ -96,7 +96,8 @@ TEST(CellGrid, MatchesTheReferenceIn3D) {
   onEveryScanPath([] { compareOnRandomCloud<3, double>(2, 1500, 1.0, 0.2); });
 }
 TEST(CellGrid, MatchesTheReferenceWithFloatPositions) {
-  compareOnRandomCloud<2, float>(3, 1000, 2.0, 0.3);
+  onEveryScanPath([] { compareOnRandomCloud<2, float>(3, 1000, 2.0, 0.3); });
+  onEveryScanPath([] { compareOnRandomCloud<3, float>(6, 1000, 1.0, 0.2); });
 }
 
 TEST(CellGrid, LatticeOnCellBorders) {

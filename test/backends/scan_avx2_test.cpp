@@ -17,16 +17,16 @@ using namespace wash::backend;
 namespace {
 
 /// The scalar test, written out: d2 = (dx*dx + dy*dy) [+ dz*dz] <= r2.
-template <int D>
-std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<double, D>> &p,
+template <int D, typename T>
+std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<T, D>> &p,
                                      const wash::Vec<double, D> &c, double r2, Index b, Index e,
                                      Index self) {
   std::vector<std::uint64_t> kept;
   for (Index j = b; j < e; ++j) {
-    double d = p[j].at(0) - c.at(0);
+    double d = double(p[j].at(0)) - c.at(0);
     double d2 = d * d;
     for (int a = 1; a < D; ++a) {
-      d = p[j].at(a) - c.at(a);
+      d = double(p[j].at(a)) - c.at(a);
       d2 += d * d;
     }
     if (j != self && d2 <= r2)
@@ -37,8 +37,8 @@ std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<double, D>> &p,
 
 /// The AVX2 scan's rows, written as Row (64-bit per-particle lists or 32-bit
 /// stored ones).
-template <int D, typename Row>
-std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<double, D>> &p,
+template <int D, typename Row, typename T>
+std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<T, D>> &p,
                                    const wash::Vec<double, D> &c, double r2, Index b, Index e,
                                    Index self) {
   std::vector<Row> out(e - b + scanSlack);
@@ -51,24 +51,26 @@ std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<double, D>> &p,
 
 /// Points on a lattice of spacing 0.25 (exact in binary), so that many lie
 /// exactly at the radius 0.5 from the centre, which is a lattice point too.
-template <int D> std::vector<wash::Vec<double, D>> lattice(unsigned seed, int n) {
+template <int D, typename T = double> std::vector<wash::Vec<T, D>> lattice(unsigned seed, int n) {
   std::mt19937 rng(seed);
   std::uniform_int_distribution<int> step(-3, 3);
-  std::vector<wash::Vec<double, D>> p(n);
+  std::vector<wash::Vec<T, D>> p(n);
   for (auto &v : p)
     for (int a = 0; a < D; ++a)
-      *v[a] = 0.25 * step(rng);
+      *v[a] = T(0.25 * step(rng));
   return p;
 }
 
-template <int D> void compareRows(unsigned seed) {
-  const std::vector<wash::Vec<double, D>> p = lattice<D>(seed, 37);
+/// Every row [b, e) of a small lattice, with the particle itself before, in and
+/// after it, on both paths and for both list widths.
+template <int D, typename T> void compareRows(unsigned seed) {
+  const std::vector<wash::Vec<T, D>> p = lattice<D, T>(seed, 37);
   const Index n = Index(p.size());
   int compared = 0;
   for (Index b = 0; b < n; b += 3)
     for (Index e = b; e <= n; ++e)
       for (Index self : {b, Index(b + 1), Index(b + 2), Index(b + 3), Index(e - 1), n}) {
-        const wash::Vec<double, D> c = p[(b * 7 + e) % n];
+        const wash::Vec<double, D> c(p[(b * 7 + e) % n]);
         const std::vector<std::uint64_t> expected = scalarRow<D>(p, c, 0.25, b, e, self);
         ASSERT_EQ((avx2Row<D, NeighbourRef>(p, c, 0.25, b, e, self)), expected)
             << "64-bit rows [" << b << ", " << e << "), self " << self;
@@ -84,15 +86,17 @@ template <int D> void compareRows(unsigned seed) {
 TEST(ScanAvx2, KeepsWhatTheScalarScanKeepsIn2D) {
   if (!__builtin_cpu_supports("avx2"))
     GTEST_SKIP() << "this machine has no AVX2: generated programs scan without it";
-  compareRows<2>(1);
-  compareRows<2>(2);
+  compareRows<2, double>(1);
+  compareRows<2, double>(2);
+  compareRows<2, float>(5);
 }
 
 TEST(ScanAvx2, KeepsWhatTheScalarScanKeepsIn3D) {
   if (!__builtin_cpu_supports("avx2"))
     GTEST_SKIP() << "this machine has no AVX2: generated programs scan without it";
-  compareRows<3>(3);
-  compareRows<3>(4);
+  compareRows<3, double>(3);
+  compareRows<3, double>(4);
+  compareRows<3, float>(6);
 }
 
 TEST(ScanAvx2, LatticeHasTiesAtTheRadius) { // the comparisons above test `<=`, not only `<`

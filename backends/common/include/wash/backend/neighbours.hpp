@@ -103,7 +103,7 @@ private:
     std::size_t kept = 0;
     const PosT *p = pos.data();
 #if WASH_SCAN_AVX2
-    if constexpr (std::is_same_v<PosT, Vec<double, D>>)
+    if constexpr (std::is_same_v<PosT, Vec<double, D>> || std::is_same_v<PosT, Vec<float, D>>)
       if (avx2Scan()) { // four candidates at a time; it skips `self` itself
         for (int r = 0; r < ranges.count; ++r)
           kept = keepRowAvx2(p, pos.size(), centre, r2, ranges.begin[r], ranges.end[r], self, out,

@@ -1,8 +1,8 @@
 //===- wash/backend/scan_avx2.hpp - the neighbour test, four at a time -*- C++ -*-===//
 //
 // Programs are built for the baseline x86-64 instruction set (SSE2), so that
-// they run on any x86-64 machine; on one with AVX2, the neighbour scan of
-// double positions (2D and 3D), the hottest loop of a search, takes this path
+// they run on any x86-64 machine; on one with AVX2, the neighbour scan (2D and
+// 3D, double or float positions), the hottest loop of a search, takes this path
 // instead, chosen at run time. It computes the same squared distances
 // ((dx*dx + dy*dy) + dz*dz, lane by lane) and keeps the same candidates in the
 // same order, so results do not depend on the machine
@@ -139,6 +139,21 @@ __attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 
                        _mm256_mul_pd(dz, dz));
 }
 
+/// Float positions: the four candidates' coordinates converted to double
+/// (exactly), then the same as for double positions. The scalar scan, too,
+/// computes in double.
+template <int D>
+__attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<float, D> *p, Index j,
+                                                              const Vec<double, D> &centre) {
+  static_assert(sizeof(Vec<float, D>) == 4 * D, "Vec<float, D> is D floats");
+  const float *at = reinterpret_cast<const float *>(p + j);
+  alignas(32) Vec<double, D> wide[4];
+  double *to = reinterpret_cast<double *>(wide);
+  for (int k = 0; k < D; ++k) // 4 * D floats, four at a time
+    _mm256_store_pd(to + 4 * k, _mm256_cvtps_pd(_mm_loadu_ps(at + 4 * k)));
+  return blockDistances(wide, 0, centre);
+}
+
 /// Appends the candidates [b, e) other than `self` within sqrt(r2) of centre
 /// to out[kept..], four candidates an iteration: their squared distances in
 /// one AVX2 register, the test's outcomes as a mask, the kept rows moved to
@@ -146,9 +161,9 @@ __attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 
 /// last block reads up to three positions past e, so `count`, the column's
 /// size, bounds the blocks; the few candidates that remain are tested one at a
 /// time.
-template <int D, typename Ref>
+template <int D, typename T, typename Ref>
 __attribute__((target("avx2"))) std::size_t
-keepRowAvx2(const Vec<double, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
+keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
             double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
   const __m256d limit = _mm256_set1_pd(r2);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
@@ -159,10 +174,10 @@ keepRowAvx2(const Vec<double, D> *__restrict p, std::size_t count, const Vec<dou
   for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
     kept = keepBlock(out, kept, blockDistances(p, j, centre), limit, rows, itself, e - j);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
-    double d = p[j].at(0) - centre.at(0);
+    double d = double(p[j].at(0)) - centre.at(0);
     double d2 = d * d;
     for (int a = 1; a < D; ++a) {
-      d = p[j].at(a) - centre.at(a);
+      d = double(p[j].at(a)) - centre.at(a);
       d2 += d * d;
     }
     out[kept].index = j;
