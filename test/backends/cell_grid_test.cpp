@@ -76,7 +76,7 @@ template <typename Check> void onEveryScanPath(Check check) {
     SCOPED_TRACE("scalar scan");
     check();
   }
-  if (__builtin_cpu_supports("avx2")) {
+  if (cpuHasAvx2()) {
     avx2Scan() = true;
     SCOPED_TRACE("AVX2 scan");
     check();

@@ -34,14 +34,17 @@ inline constexpr std::size_t scanSlack = 4;
 
 #if WASH_SCAN_AVX2
 
+/// Whether this machine runs AVX2 code.
+inline bool cpuHasAvx2() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") != 0;
+}
+
 /// Whether scans take the AVX2 path: on a machine that has it, unless the
 /// environment sets WASH_SCALAR_SCAN (to check that results do not depend on
-/// the path; tests also switch it here).
+/// the path; tests also switch it here). Decided once.
 inline bool &avx2Scan() {
-  static bool use = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0 && !std::getenv("WASH_SCALAR_SCAN");
-  }();
+  static bool use = cpuHasAvx2() && !std::getenv("WASH_SCALAR_SCAN");
   return use;
 }
 
@@ -98,29 +101,47 @@ __attribute__((target("avx2"))) inline std::size_t keepBlock(Ref *out, std::size
   return kept + std::size_t(__builtin_popcount(unsigned(mask)));
 }
 
-/// The squared distances from centre of the four candidates from p[j] on,
-/// (dx*dx + dy*dy) lane by lane: two registers of (x, y) pairs, added
-/// pairwise and put back in candidate order.
-__attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 2> *p, Index j,
-                                                              const Vec<double, 2> &centre) {
-  static_assert(sizeof(Vec<double, 2>) == 16, "Vec<double, 2> is two doubles");
-  const __m256d origin = _mm256_setr_pd(centre.at(0), centre.at(1), centre.at(0), centre.at(1));
+/// The coordinates of four candidates from p[j] on, as stored (x0 y0 x1 y1 |
+/// x2 y2 x3 y3 in 2D; x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3 in 3D), in
+/// double: float positions are converted (exactly), as the scalar scan does.
+template <int D> struct Block {
+  __m256d part[D];
+};
+template <int D>
+__attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<double, D> *p, Index j) {
+  static_assert(sizeof(Vec<double, D>) == 8 * D, "Vec<double, D> is D doubles");
   const double *at = reinterpret_cast<const double *>(p + j);
-  __m256d first = _mm256_sub_pd(_mm256_loadu_pd(at), origin);      // dx0 dy0 dx1 dy1
-  __m256d second = _mm256_sub_pd(_mm256_loadu_pd(at + 4), origin); // dx2 dy2 dx3 dy3
-  first = _mm256_mul_pd(first, first);
-  second = _mm256_mul_pd(second, second);
-  return _mm256_permute4x64_pd(_mm256_hadd_pd(first, second), 0xD8); // d0 d2 d1 d3 -> d0 .. d3
+  Block<D> block;
+  for (int k = 0; k < D; ++k)
+    block.part[k] = _mm256_loadu_pd(at + 4 * k);
+  return block;
+}
+template <int D>
+__attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<float, D> *p, Index j) {
+  static_assert(sizeof(Vec<float, D>) == 4 * D, "Vec<float, D> is D floats");
+  const float *at = reinterpret_cast<const float *>(p + j);
+  Block<D> block;
+  for (int k = 0; k < D; ++k)
+    block.part[k] = _mm256_cvtps_pd(_mm_loadu_ps(at + 4 * k));
+  return block;
 }
 
-/// The same in 3D, (dx*dx + dy*dy) + dz*dz: the four candidates' coordinates
-/// are three registers (x0 y0 z0 x1 | y1 z1 x2 y2 | z2 x3 y3 z3), regrouped by
+/// The four squared distances from centre, dx*dx + dy*dy lane by lane: the
+/// (x, y) pairs squared, added pairwise and put back in candidate order.
+__attribute__((target("avx2"))) inline __m256d blockDistances(const Block<2> &block,
+                                                              const Vec<double, 2> &centre) {
+  const __m256d origin = _mm256_setr_pd(centre.at(0), centre.at(1), centre.at(0), centre.at(1));
+  const __m256d first = _mm256_sub_pd(block.part[0], origin);  // dx0 dy0 dx1 dy1
+  const __m256d second = _mm256_sub_pd(block.part[1], origin); // dx2 dy2 dx3 dy3
+  const __m256d sums = _mm256_hadd_pd(_mm256_mul_pd(first, first), _mm256_mul_pd(second, second));
+  return _mm256_permute4x64_pd(sums, 0xD8); // d0 d2 d1 d3 -> d0 .. d3
+}
+
+/// The same in 3D, (dx*dx + dy*dy) + dz*dz, the coordinates regrouped by
 /// axis first.
-__attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 3> *p, Index j,
+__attribute__((target("avx2"))) inline __m256d blockDistances(const Block<3> &block,
                                                               const Vec<double, 3> &centre) {
-  static_assert(sizeof(Vec<double, 3>) == 24, "Vec<double, 3> is three doubles");
-  const double *at = reinterpret_cast<const double *>(p + j);
-  const __m256d a = _mm256_loadu_pd(at), m = _mm256_loadu_pd(at + 4), c = _mm256_loadu_pd(at + 8);
+  const __m256d a = block.part[0], m = block.part[1], c = block.part[2];
   // x: a0 a3 m2 c1; y: a1 m0 m3 c2; z: a2 m1 c0 c3. A shuffle takes its low
   // pair from the low halves of its sources and its high pair from the high
   // halves, so each axis is a blend of two shuffles.
@@ -137,21 +158,6 @@ __attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<double, 
   const __m256d dz = _mm256_sub_pd(z, _mm256_set1_pd(centre.at(2)));
   return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)),
                        _mm256_mul_pd(dz, dz));
-}
-
-/// Float positions: the four candidates' coordinates converted to double
-/// (exactly), then the same as for double positions. The scalar scan, too,
-/// computes in double.
-template <int D>
-__attribute__((target("avx2"))) inline __m256d blockDistances(const Vec<float, D> *p, Index j,
-                                                              const Vec<double, D> &centre) {
-  static_assert(sizeof(Vec<float, D>) == 4 * D, "Vec<float, D> is D floats");
-  const float *at = reinterpret_cast<const float *>(p + j);
-  alignas(32) Vec<double, D> wide[4];
-  double *to = reinterpret_cast<double *>(wide);
-  for (int k = 0; k < D; ++k) // 4 * D floats, four at a time
-    _mm256_store_pd(to + 4 * k, _mm256_cvtps_pd(_mm_loadu_ps(at + 4 * k)));
-  return blockDistances(wide, 0, centre);
 }
 
 /// Appends the candidates [b, e) other than `self` within sqrt(r2) of centre
@@ -172,7 +178,8 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
       _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)), _mm256_setr_epi64x(0, 1, 2, 3));
   Index j = b;
   for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
-    kept = keepBlock(out, kept, blockDistances(p, j, centre), limit, rows, itself, e - j);
+    kept =
+        keepBlock(out, kept, blockDistances(loadBlock(p, j), centre), limit, rows, itself, e - j);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     double d = double(p[j].at(0)) - centre.at(0);
     double d2 = d * d;
