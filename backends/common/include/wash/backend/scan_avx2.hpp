@@ -107,22 +107,17 @@ __attribute__((target("avx2"))) inline std::size_t keepBlock(Ref *out, std::size
 template <int D> struct Block {
   __m256d part[D];
 };
-template <int D>
-__attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<double, D> *p, Index j) {
-  static_assert(sizeof(Vec<double, D>) == 8 * D, "Vec<double, D> is D doubles");
-  const double *at = reinterpret_cast<const double *>(p + j);
+template <int D, typename T>
+__attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<T, D> *p, Index j) {
+  static_assert(sizeof(Vec<T, D>) == sizeof(T) * D, "Vec<T, D> is D numbers");
+  const T *at = reinterpret_cast<const T *>(p + j);
   Block<D> block;
-  for (int k = 0; k < D; ++k)
-    block.part[k] = _mm256_loadu_pd(at + 4 * k);
-  return block;
-}
-template <int D>
-__attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<float, D> *p, Index j) {
-  static_assert(sizeof(Vec<float, D>) == 4 * D, "Vec<float, D> is D floats");
-  const float *at = reinterpret_cast<const float *>(p + j);
-  Block<D> block;
-  for (int k = 0; k < D; ++k)
-    block.part[k] = _mm256_cvtps_pd(_mm_loadu_ps(at + 4 * k));
+  for (int k = 0; k < D; ++k) {
+    if constexpr (std::is_same_v<T, double>)
+      block.part[k] = _mm256_loadu_pd(at + 4 * k);
+    else
+      block.part[k] = _mm256_cvtps_pd(_mm_loadu_ps(at + 4 * k));
+  }
   return block;
 }
 
