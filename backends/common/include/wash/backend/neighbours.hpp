@@ -105,9 +105,7 @@ private:
 #if WASH_SCAN_AVX2
     if constexpr (std::is_same_v<PosT, Vec<double, D>> || std::is_same_v<PosT, Vec<float, D>>)
       if (avx2Scan()) { // four candidates at a time; it skips `self` itself
-        for (int r = 0; r < ranges.count; ++r)
-          kept = keepRowAvx2(p, pos.size(), centre, r2, ranges.begin[r], ranges.end[r], self, out,
-                             kept);
+        kept = keepRangesAvx2(p, pos.size(), centre, r2, ranges, self, out);
         begin_ = out;
         end_ = out + kept;
         return;

@@ -11,6 +11,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/backend/cell_grid.hpp>
 #include <wash/backend/columns.hpp>
 #include <wash/vec.hpp>
 
@@ -48,56 +49,68 @@ inline bool &avx2Scan() {
   return use;
 }
 
-/// For each 4-bit mask of kept candidates, the 32-bit lanes that move their
-/// rows (64-bit lanes of a register) to the front, in order: whole rows for
-/// 64-bit lists, their low halves for 32-bit ones.
-struct ScanCompaction {
+/// The candidate each lane of a block's squared distances holds: 2D sums
+/// come out of their pairwise adds as 0 2 1 3, and the tables below follow
+/// that order instead of a shuffle putting the lanes back.
+template <int D> inline constexpr int laneCandidate[4] = {0, 1, 2, 3};
+template <> inline constexpr int laneCandidate<2>[4] = {0, 2, 1, 3};
+
+/// For each 4-bit mask of kept lanes, the 32-bit lanes that move their rows
+/// (64-bit lanes of a register) to the front in candidate order: whole rows
+/// for 64-bit lists, their low halves for 32-bit ones.
+template <int D> struct ScanCompaction {
   alignas(32) std::int32_t wide[16][8];
   alignas(32) std::int32_t narrow[16][8];
   constexpr ScanCompaction() : wide{}, narrow{} {
     for (int mask = 0; mask < 16; ++mask) {
       int to = 0;
-      for (int from = 0; from < 4; ++from)
-        if (mask >> from & 1) {
-          wide[mask][2 * to] = 2 * from;
-          wide[mask][2 * to + 1] = 2 * from + 1;
-          narrow[mask][to] = 2 * from;
+      for (int candidate = 0; candidate < 4; ++candidate) {
+        int lane = 0;
+        while (laneCandidate<D>[lane] != candidate)
+          ++lane;
+        if (mask >> lane & 1) {
+          wide[mask][2 * to] = 2 * lane;
+          wide[mask][2 * to + 1] = 2 * lane + 1;
+          narrow[mask][to] = 2 * lane;
           ++to;
         }
+      }
     }
   }
 };
-inline constexpr ScanCompaction scanCompaction{};
+template <int D> inline constexpr ScanCompaction<D> scanCompaction{};
 
 /// Stores the rows of `rows` (four 64-bit lanes) that `mask` keeps at `to`, in
-/// order, as Ref; writes a whole block of four Refs.
-template <typename Ref>
+/// candidate order, as Ref; writes a whole block of four Refs.
+template <int D, typename Ref>
 __attribute__((target("avx2"))) inline void storeKept(Ref *to, __m256i rows, int mask) {
   static_assert((sizeof(Ref) == 8 || sizeof(Ref) == 4) && std::is_trivially_copyable_v<Ref>,
                 "32- or 64-bit rows");
   if constexpr (sizeof(Ref) == 8) {
     const __m256i order =
-        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.wide[mask]));
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction<D>.wide[mask]));
     _mm256_storeu_si256(reinterpret_cast<__m256i *>(to), _mm256_permutevar8x32_epi32(rows, order));
   } else {
     const __m256i order =
-        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction.narrow[mask]));
+        _mm256_load_si256(reinterpret_cast<const __m256i *>(scanCompaction<D>.narrow[mask]));
     _mm_storeu_si128(reinterpret_cast<__m128i *>(to),
                      _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(rows, order)));
   }
 }
 
-/// The candidates of one block of four (rows, their squared distances d2) that
-/// pass the test, less the particle itself and the lanes past the row's end
-/// (`left` candidates remain in the row), stored at out[kept..]; the new count.
-template <typename Ref>
+/// The candidates of one block of four (rows, their squared distances d2, lane
+/// by lane in laneCandidate<D> order) that pass the test, less the particle
+/// itself and the rows at or past `end`, stored at out[kept..]; the new count.
+template <int D, typename Ref>
 __attribute__((target("avx2"))) inline std::size_t keepBlock(Ref *out, std::size_t kept, __m256d d2,
                                                              __m256d limit, __m256i rows,
-                                                             __m256i itself, Index left) {
-  const int near = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
-  const int other = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(rows, itself)));
-  const int mask = near & other & (left >= 4 ? 15 : (1 << left) - 1);
-  storeKept(out + kept, rows, mask);
+                                                             __m256i itself, __m256i end) {
+  const __m256i near = _mm256_castpd_si256(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
+  const __m256i inRow = _mm256_cmpgt_epi64(end, rows);
+  const __m256i kept4 =
+      _mm256_andnot_si256(_mm256_cmpeq_epi64(rows, itself), _mm256_and_si256(near, inRow));
+  const int mask = _mm256_movemask_pd(_mm256_castsi256_pd(kept4));
+  storeKept<D>(out + kept, rows, mask);
   return kept + std::size_t(__builtin_popcount(unsigned(mask)));
 }
 
@@ -122,14 +135,14 @@ __attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<T, D> *p, In
 }
 
 /// The four squared distances from centre, dx*dx + dy*dy lane by lane: the
-/// (x, y) pairs squared, added pairwise and put back in candidate order.
+/// (x, y) pairs squared and added pairwise, which leaves them in
+/// laneCandidate<2> order (d0 d2 d1 d3).
 __attribute__((target("avx2"))) inline __m256d blockDistances(const Block<2> &block,
                                                               const Vec<double, 2> &centre) {
   const __m256d origin = _mm256_setr_pd(centre.at(0), centre.at(1), centre.at(0), centre.at(1));
   const __m256d first = _mm256_sub_pd(block.part[0], origin);  // dx0 dy0 dx1 dy1
   const __m256d second = _mm256_sub_pd(block.part[1], origin); // dx2 dy2 dx3 dy3
-  const __m256d sums = _mm256_hadd_pd(_mm256_mul_pd(first, first), _mm256_mul_pd(second, second));
-  return _mm256_permute4x64_pd(sums, 0xD8); // d0 d2 d1 d3 -> d0 .. d3
+  return _mm256_hadd_pd(_mm256_mul_pd(first, first), _mm256_mul_pd(second, second));
 }
 
 /// The same in 3D, (dx*dx + dy*dy) + dz*dz, the coordinates regrouped by
@@ -157,24 +170,27 @@ __attribute__((target("avx2"))) inline __m256d blockDistances(const Block<3> &bl
 
 /// Appends the candidates [b, e) other than `self` within sqrt(r2) of centre
 /// to out[kept..], four candidates an iteration: their squared distances in
-/// one AVX2 register, the test's outcomes as a mask, the kept rows moved to
-/// the front of a block by a table and stored whole (hence scanSlack). A row's
+/// one AVX2 register, the test's outcomes (within the radius, before e, not
+/// `self`) as one mask, the kept rows moved to the front of a block by a table
+/// and stored whole (hence scanSlack). A row's
 /// last block reads up to three positions past e, so `count`, the column's
 /// size, bounds the blocks; the few candidates that remain are tested one at a
 /// time.
 template <int D, typename T, typename Ref>
-__attribute__((target("avx2"))) std::size_t
+__attribute__((target("avx2"))) inline std::size_t
 keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
             double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
   const __m256d limit = _mm256_set1_pd(r2);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
+  const __m256i end = _mm256_set1_epi64x(std::int64_t(e));
   const __m256i four = _mm256_set1_epi64x(4);
-  __m256i rows =
-      _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)), _mm256_setr_epi64x(0, 1, 2, 3));
+  constexpr const int *lane = laneCandidate<D>;
+  __m256i rows = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)),
+                                  _mm256_setr_epi64x(lane[0], lane[1], lane[2], lane[3]));
   Index j = b;
   for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
-    kept =
-        keepBlock(out, kept, blockDistances(loadBlock(p, j), centre), limit, rows, itself, e - j);
+    kept = keepBlock<D>(out, kept, blockDistances(loadBlock(p, j), centre), limit, rows, itself,
+                        end);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     double d = double(p[j].at(0)) - centre.at(0);
     double d2 = d * d;
@@ -185,6 +201,18 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
     out[kept].index = j;
     kept += (d2 <= r2) & (j != self);
   }
+  return kept;
+}
+
+/// Every candidate range of one particle through keepRowAvx2 (one call per
+/// particle: the constants are set up once, not per row); the count kept.
+template <int D, typename T, typename Ref>
+__attribute__((target("avx2"))) std::size_t
+keepRangesAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
+               double r2, const CandidateRanges &ranges, Index self, Ref *__restrict out) {
+  std::size_t kept = 0;
+  for (int r = 0; r < ranges.count; ++r)
+    kept = keepRowAvx2(p, count, centre, r2, ranges.begin[r], ranges.end[r], self, out, kept);
   return kept;
 }
 
