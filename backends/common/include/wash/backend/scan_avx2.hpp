@@ -189,8 +189,8 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
                                   _mm256_setr_epi64x(lane[0], lane[1], lane[2], lane[3]));
   Index j = b;
   for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
-    kept = keepBlock<D>(out, kept, blockDistances(loadBlock(p, j), centre), limit, rows, itself,
-                        end);
+    kept =
+        keepBlock<D>(out, kept, blockDistances(loadBlock(p, j), centre), limit, rows, itself, end);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     double d = double(p[j].at(0)) - centre.at(0);
     double d2 = d * d;
