@@ -424,7 +424,7 @@ inline void stencilRows(const Grid &G, double x, double y, Rows &R) {
 /// their squared distance and, if WithIndex, their index. Branch-free: the
 /// entry is always written, and kept (the count advanced) if it passes the
 /// test. (A two-lane SSE2 version of this loop was no faster; on AVX2
-/// machines scanRowAvx2 below replaces it.)
+/// machines scanRowsAvx2 below replaces it.)
 template <bool WithIndex>
 inline std::uint32_t scanRange(const double *__restrict px, const double *__restrict py, double x,
                                double y, std::uint32_t b, std::uint32_t e,
@@ -469,41 +469,48 @@ struct KeptFirst {
 };
 const KeptFirst keptFirst;
 
-/// scanRange over a whole stencil row, four candidates an iteration, leaving
-/// out particle i by a lane mask instead of splitting the row. A block may read
-/// up to three entries past e (n bounds that); the same d2 = dx*dx + dy*dy.
+/// scanRange over every stencil row, four candidates an iteration, leaving
+/// out particle i and the entries past a row's end by one vector mask instead
+/// of splitting rows. A block may read up to three entries past a row's end (n
+/// bounds that); the same d2 = dx*dx + dy*dy. One call per particle.
 template <bool WithIndex>
 __attribute__((target("avx2"))) std::uint32_t
-scanRowAvx2(const double *__restrict px, const double *__restrict py, std::size_t n, double x,
-            double y, std::uint32_t b, std::uint32_t e, std::uint32_t i,
-            std::uint64_t *__restrict jout, double *__restrict d2out, std::uint32_t m) {
+scanRowsAvx2(const double *__restrict px, const double *__restrict py, std::size_t n, double x,
+             double y, const Rows &R, std::uint32_t i, std::uint64_t *__restrict jout,
+             double *__restrict d2out) {
   const __m256d cx = _mm256_set1_pd(x), cy = _mm256_set1_pd(y), limit = _mm256_set1_pd(r2);
   const __m256i self = _mm256_set1_epi64x(i), four = _mm256_set1_epi64x(4);
-  __m256i index = _mm256_add_epi64(_mm256_set1_epi64x(b), _mm256_setr_epi64x(0, 1, 2, 3));
-  std::uint32_t j = b;
-  for (; j < e && j + 4 <= n; j += 4, index = _mm256_add_epi64(index, four)) {
-    const __m256d ox = _mm256_sub_pd(_mm256_loadu_pd(px + j), cx);
-    const __m256d oy = _mm256_sub_pd(_mm256_loadu_pd(py + j), cy);
-    const __m256d d2 = _mm256_add_pd(_mm256_mul_pd(ox, ox), _mm256_mul_pd(oy, oy));
-    const int near = _mm256_movemask_pd(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
-    const int other = ~_mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(index, self)));
-    const int kept = near & other & (e - j >= 4 ? 15 : (1 << (e - j)) - 1);
-    const __m256i front =
-        _mm256_load_si256(reinterpret_cast<const __m256i *>(keptFirst.lanes[kept]));
-    _mm256_storeu_pd(d2out + m, _mm256_castsi256_pd(_mm256_permutevar8x32_epi32(
-                                    _mm256_castpd_si256(d2), front)));
-    if constexpr (WithIndex)
-      _mm256_storeu_si256(reinterpret_cast<__m256i *>(jout + m),
-                          _mm256_permutevar8x32_epi32(index, front));
-    m += std::uint32_t(__builtin_popcount(unsigned(kept)));
-  }
-  for (; j < e; ++j) { // the column's last few
-    const double ox = px[j] - x, oy = py[j] - y;
-    const double d2 = ox * ox + oy * oy;
-    d2out[m] = d2;
-    if constexpr (WithIndex)
-      jout[m] = j;
-    m += std::uint32_t(d2 <= r2 && j != i);
+  std::uint32_t m = 0;
+  for (int row = 0; row < R.count; ++row) {
+    const std::uint32_t b = R.b[row], e = R.e[row];
+    const __m256i end = _mm256_set1_epi64x(e);
+    __m256i index = _mm256_add_epi64(_mm256_set1_epi64x(b), _mm256_setr_epi64x(0, 1, 2, 3));
+    std::uint32_t j = b;
+    for (; j < e && j + 4 <= n; j += 4, index = _mm256_add_epi64(index, four)) {
+      const __m256d ox = _mm256_sub_pd(_mm256_loadu_pd(px + j), cx);
+      const __m256d oy = _mm256_sub_pd(_mm256_loadu_pd(py + j), cy);
+      const __m256d d2 = _mm256_add_pd(_mm256_mul_pd(ox, ox), _mm256_mul_pd(oy, oy));
+      const __m256i near = _mm256_castpd_si256(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
+      const __m256i keep = _mm256_andnot_si256(
+          _mm256_cmpeq_epi64(index, self), _mm256_and_si256(near, _mm256_cmpgt_epi64(end, index)));
+      const int kept = _mm256_movemask_pd(_mm256_castsi256_pd(keep));
+      const __m256i front =
+          _mm256_load_si256(reinterpret_cast<const __m256i *>(keptFirst.lanes[kept]));
+      _mm256_storeu_pd(d2out + m, _mm256_castsi256_pd(
+                                      _mm256_permutevar8x32_epi32(_mm256_castpd_si256(d2), front)));
+      if constexpr (WithIndex)
+        _mm256_storeu_si256(reinterpret_cast<__m256i *>(jout + m),
+                            _mm256_permutevar8x32_epi32(index, front));
+      m += std::uint32_t(__builtin_popcount(unsigned(kept)));
+    }
+    for (; j < e; ++j) { // the column's last few
+      const double ox = px[j] - x, oy = py[j] - y;
+      const double d2 = ox * ox + oy * oy;
+      d2out[m] = d2;
+      if constexpr (WithIndex)
+        jout[m] = j;
+      m += std::uint32_t(d2 <= r2 && j != i);
+    }
   }
   return m;
 }
@@ -525,11 +532,8 @@ inline std::uint32_t listNeighbours(const Grid &G, const double *px, const doubl
   std::uint64_t *jout = L.j.data();
   double *d2out = L.d2.data();
 #if HANDWRITTEN_AVX2
-  if (hasAvx2()) {
-    for (int row = 0; row < R.count; ++row)
-      m = scanRowAvx2<WithIndex>(px, py, n, x, y, R.b[row], R.e[row], i, jout, d2out, m);
-    return m;
-  }
+  if (hasAvx2())
+    return scanRowsAvx2<WithIndex>(px, py, n, x, y, R, i, jout, d2out);
 #endif
   for (int row = 0; row < R.count; ++row) {
     const std::uint32_t b = R.b[row], e = R.e[row];
