@@ -4,6 +4,8 @@
 #include <wash/backend/search_geometry.hpp>
 #include <wash/detail/neighbour_search.hpp>
 
+#include "scan_paths.hpp"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -64,27 +66,6 @@ void compareOnRandomCloud(unsigned seed, int n, double extent, double r) {
     id.push_back(std::uint64_t((k * 7919) % n)); // storage order is not id order
   }
   EXPECT_EQ((backendNeighbours<D>(pos, id, r)), (referenceNeighbours<D>(pos, id, r)));
-}
-
-/// Runs check() with the scalar scan, then with the AVX2 one where the
-/// machine has it (scan_avx2.hpp): both must give the reference's lists.
-template <typename Check> void onEveryScanPath(Check check) {
-#if WASH_SCAN_AVX2
-  const bool saved = avx2Scan();
-  avx2Scan() = false;
-  {
-    SCOPED_TRACE("scalar scan");
-    check();
-  }
-  if (cpuHasAvx2()) {
-    avx2Scan() = true;
-    SCOPED_TRACE("AVX2 scan");
-    check();
-  }
-  avx2Scan() = saved;
-#else
-  check();
-#endif
 }
 
 } // namespace

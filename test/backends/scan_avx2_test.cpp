@@ -16,36 +16,50 @@ using namespace wash::backend;
 
 namespace {
 
-/// The scalar test, written out: d2 = (dx*dx + dy*dy) [+ dz*dz] <= r2.
+/// The scalar test's squared distance, written out: (dx*dx + dy*dy) [+ dz*dz].
+template <int D, typename T>
+double squaredDistance(const wash::Vec<T, D> &q, const wash::Vec<double, D> &c) {
+  double d = double(q.at(0)) - c.at(0);
+  double d2 = d * d;
+  for (int a = 1; a < D; ++a) {
+    d = double(q.at(a)) - c.at(a);
+    d2 += d * d;
+  }
+  return d2;
+}
+
+/// The scalar test: d2 <= r2.
 template <int D, typename T>
 std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<T, D>> &p,
                                      const wash::Vec<double, D> &c, double r2, Index b, Index e,
                                      Index self) {
   std::vector<std::uint64_t> kept;
-  for (Index j = b; j < e; ++j) {
-    double d = double(p[j].at(0)) - c.at(0);
-    double d2 = d * d;
-    for (int a = 1; a < D; ++a) {
-      d = double(p[j].at(a)) - c.at(a);
-      d2 += d * d;
-    }
-    if (j != self && d2 <= r2)
+  for (Index j = b; j < e; ++j)
+    if (j != self && squaredDistance(p[j], c) <= r2)
       kept.push_back(j);
-  }
   return kept;
 }
 
 /// The AVX2 scan's rows, written as Row (64-bit per-particle lists or 32-bit
-/// stored ones).
+/// stored ones); also scanned keeping squared distances, which must be the
+/// scalar test's and leave the rows as they were.
 template <int D, typename Row, typename T>
 std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<T, D>> &p,
                                    const wash::Vec<double, D> &c, double r2, Index b, Index e,
                                    Index self) {
-  std::vector<Row> out(e - b + scanSlack);
-  const std::size_t kept = keepRowAvx2(p.data(), p.size(), c, r2, b, e, self, out.data(), 0);
+  std::vector<Row> out(e - b + scanSlack), again(e - b + scanSlack);
+  std::vector<double> d2(e - b + scanSlack);
+  const std::size_t kept =
+      keepRowAvx2<D, false>(p.data(), p.size(), c, r2, b, e, self, out.data(), nullptr, 0);
+  EXPECT_EQ(
+      (keepRowAvx2<D, true>(p.data(), p.size(), c, r2, b, e, self, again.data(), d2.data(), 0)),
+      kept);
   std::vector<std::uint64_t> rows;
-  for (std::size_t k = 0; k < kept; ++k)
+  for (std::size_t k = 0; k < kept; ++k) {
     rows.push_back(out[k].index);
+    EXPECT_EQ(again[k].index, out[k].index);
+    EXPECT_EQ(d2[k], squaredDistance(p[out[k].index], c)) << "row " << out[k].index;
+  }
   return rows;
 }
 

@@ -11,6 +11,7 @@
 #include <wash/backend/scan_avx2.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -43,7 +44,17 @@ using StoredNeighbourRef = NeighbourRefOf<Index>;
 /// of the kernel and its helpers then run over that short list only. The list
 /// lives in a per-thread buffer: one Neighbours per thread at a time, which is
 /// how the generated drivers use it.
-template <int D, typename PosT, typename Ref = NeighbourRef> class Neighbours {
+///
+/// With Distances (double positions, one-radius search), the scan also keeps
+/// each neighbour's distance, which it has all but computed: std::sqrt of the
+/// squared distance it tested, summed in component order, so bit for bit what
+/// `(n.get_pos() - p.get_pos()).magnitude()` gives. The translator reads it
+/// in place of that expression (docs/backends.md).
+template <int D, typename PosT, typename Ref = NeighbourRef, bool Distances = false>
+class Neighbours {
+  static_assert(!Distances || std::is_same_v<PosT, Vec<double, D>>,
+                "distances equal the user's only for double positions");
+
 public:
   Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self) {
     scan(grid, pos, self, grid.radius());
@@ -53,6 +64,7 @@ public:
   /// particle `self`, in ascending id order.
   Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
              const Column<std::uint64_t> &ids, double radius) {
+    static_assert(!Distances, "the smoothing-length rule reorders the list: no distances");
     scan(grid, pos, self, radius);
     const std::size_t kept = size();
     std::vector<std::uint64_t> &keys = threadKeys();
@@ -67,7 +79,9 @@ public:
   }
 
   /// A list kept elsewhere (NeighbourTable).
-  Neighbours(const Ref *begin, const Ref *end) : begin_(begin), end_(end) {}
+  Neighbours(const Ref *begin, const Ref *end) : begin_(begin), end_(end) {
+    static_assert(!Distances, "stored lists keep no distances");
+  }
 
   const Ref *begin() const { return begin_; }
   const Ref *end() const { return end_; }
@@ -78,6 +92,12 @@ public:
     if (k >= size())
       throw std::out_of_range("wash: neighbour index out of range");
     return begin_[k];
+  }
+  /// The distance from the particle to neighbour n, an element of this list
+  /// (the range-for variable or a reference to [k], never a copy).
+  double distance(const Ref &n) const {
+    static_assert(Distances, "this list keeps no distances");
+    return dist_[&n - begin_];
   }
   const Ref &front() const { return *begin_; }
   const Ref &back() const { return end_[-1]; }
@@ -100,12 +120,20 @@ private:
     if (buffer.size() < candidates + scanSlack)
       buffer.resize(candidates + scanSlack); // the vector scan writes whole blocks
     Ref *out = buffer.data();
+    double *dist = nullptr;
+    if constexpr (Distances) {
+      std::vector<double> &distances = threadDistances();
+      if (distances.size() < candidates + scanSlack)
+        distances.resize(candidates + scanSlack);
+      dist = distances.data();
+      dist_ = dist;
+    }
     std::size_t kept = 0;
     const PosT *p = pos.data();
 #if WASH_SCAN_AVX2
     if constexpr (std::is_same_v<PosT, Vec<double, D>> || std::is_same_v<PosT, Vec<float, D>>)
       if (avx2Scan()) { // four candidates at a time; it skips `self` itself
-        kept = keepRangesAvx2(p, pos.size(), centre, r2, ranges, self, out);
+        kept = keepRangesAvx2<D, Distances>(p, pos.size(), centre, r2, ranges, self, out, dist);
         begin_ = out;
         end_ = out + kept;
         return;
@@ -114,22 +142,27 @@ private:
     for (int r = 0; r < ranges.count; ++r) {
       const Index b = ranges.begin[r], e = ranges.end[r];
       if (b <= self && self < e) { // skip the particle itself by splitting its row
-        kept = keep(p, centre, r2, b, self, out, kept);
-        kept = keep(p, centre, r2, self + 1, e, out, kept);
+        kept = keep(p, centre, r2, b, self, out, dist, kept);
+        kept = keep(p, centre, r2, self + 1, e, out, dist, kept);
       } else {
-        kept = keep(p, centre, r2, b, e, out, kept);
+        kept = keep(p, centre, r2, b, e, out, dist, kept);
       }
     }
+    if constexpr (Distances)
+      for (std::size_t k = 0; k < kept; ++k)
+        dist[k] = std::sqrt(dist[k]);
     begin_ = out;
     end_ = out + kept;
   }
 
-  /// Appends the candidates [b, e) within sqrt(r2) of centre to out[kept..].
+  /// Appends the candidates [b, e) within sqrt(r2) of centre to out[kept..]
+  /// (and with Distances their squared distances to d2[kept..]).
   static std::size_t keep(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
-                          Index b, Index e, Ref *__restrict out, std::size_t kept) {
+                          Index b, Index e, Ref *__restrict out, double *__restrict d2out,
+                          std::size_t kept) {
 #if defined(__GNUC__) // g++ and clang: vector extensions
     if constexpr (D == 2 && std::is_same_v<PosT, Vec<double, 2>>)
-      return keepPlanar(p, centre, r2, b, e, out, kept);
+      return keepPlanar(p, centre, r2, b, e, out, d2out, kept);
 #endif
     for (Index j = b; j < e; ++j) {
       double d = double(p[j].at(0)) - centre.at(0);
@@ -139,6 +172,8 @@ private:
         d2 += d * d;
       }
       out[kept].index = j;
+      if constexpr (Distances)
+        d2out[kept] = d2;
       kept += d2 <= r2;
     }
     return kept;
@@ -152,7 +187,7 @@ private:
   /// file); this one's did not (docs/performance.md).
   static std::size_t keepPlanar(const Vec<double, 2> *__restrict p, const Vec<double, 2> &centre,
                                 double r2, Index b, Index e, Ref *__restrict out,
-                                std::size_t kept) {
+                                double *__restrict d2out, std::size_t kept) {
     typedef double Pair __attribute__((vector_size(16)));
     static_assert(sizeof(Vec<double, 2>) == sizeof(Pair) &&
                       std::is_trivially_copyable_v<Vec<double, 2>>,
@@ -164,6 +199,8 @@ private:
       d -= c;
       d *= d;
       out[kept].index = j;
+      if constexpr (Distances)
+        d2out[kept] = d[0] + d[1];
       kept += d[0] + d[1] <= r2;
     }
     return kept;
@@ -174,6 +211,10 @@ private:
     thread_local std::vector<Ref> buffer;
     return buffer;
   }
+  static std::vector<double> &threadDistances() {
+    thread_local std::vector<double> distances;
+    return distances;
+  }
   static std::vector<std::uint64_t> &threadKeys() {
     thread_local std::vector<std::uint64_t> keys;
     return keys;
@@ -181,6 +222,7 @@ private:
 
   const Ref *begin_;
   const Ref *end_;
+  const double *dist_ = nullptr; // with Distances: dist_[k] for begin_[k]
 };
 
 } // namespace wash::backend

@@ -100,17 +100,20 @@ __attribute__((target("avx2"))) inline void storeKept(Ref *to, __m256i rows, int
 
 /// The candidates of one block of four (rows, their squared distances d2, lane
 /// by lane in laneCandidate<D> order) that pass the test, less the particle
-/// itself and the rows at or past `end`, stored at out[kept..]; the new count.
-template <int D, typename Ref>
-__attribute__((target("avx2"))) inline std::size_t keepBlock(Ref *out, std::size_t kept, __m256d d2,
-                                                             __m256d limit, __m256i rows,
-                                                             __m256i itself, __m256i end) {
+/// itself and the rows at or past `end`, stored at out[kept..], and with
+/// Distances their squared distances at d2out[kept..]; the new count.
+template <int D, bool Distances, typename Ref>
+__attribute__((target("avx2"))) inline std::size_t
+keepBlock(Ref *out, double *d2out, std::size_t kept, __m256d d2, __m256d limit, __m256i rows,
+          __m256i itself, __m256i end) {
   const __m256i near = _mm256_castpd_si256(_mm256_cmp_pd(d2, limit, _CMP_LE_OQ));
   const __m256i inRow = _mm256_cmpgt_epi64(end, rows);
   const __m256i kept4 =
       _mm256_andnot_si256(_mm256_cmpeq_epi64(rows, itself), _mm256_and_si256(near, inRow));
   const int mask = _mm256_movemask_pd(_mm256_castsi256_pd(kept4));
   storeKept<D>(out + kept, rows, mask);
+  if constexpr (Distances) // the same lanes: 64-bit, like wide rows
+    storeKept<D>(reinterpret_cast<std::uint64_t *>(d2out + kept), _mm256_castpd_si256(d2), mask);
   return kept + std::size_t(__builtin_popcount(unsigned(mask)));
 }
 
@@ -175,11 +178,12 @@ __attribute__((target("avx2"))) inline __m256d blockDistances(const Block<3> &bl
 /// and stored whole (hence scanSlack). A row's
 /// last block reads up to three positions past e, so `count`, the column's
 /// size, bounds the blocks; the few candidates that remain are tested one at a
-/// time.
-template <int D, typename T, typename Ref>
+/// time. With Distances, the squared distances kept go to d2out[kept..] too.
+template <int D, bool Distances, typename T, typename Ref>
 __attribute__((target("avx2"))) inline std::size_t
 keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
-            double r2, Index b, Index e, Index self, Ref *__restrict out, std::size_t kept) {
+            double r2, Index b, Index e, Index self, Ref *__restrict out, double *__restrict d2out,
+            std::size_t kept) {
   const __m256d limit = _mm256_set1_pd(r2);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
   const __m256i end = _mm256_set1_epi64x(std::int64_t(e));
@@ -189,8 +193,8 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
                                   _mm256_setr_epi64x(lane[0], lane[1], lane[2], lane[3]));
   Index j = b;
   for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
-    kept =
-        keepBlock<D>(out, kept, blockDistances(loadBlock(p, j), centre), limit, rows, itself, end);
+    kept = keepBlock<D, Distances>(out, d2out, kept, blockDistances(loadBlock(p, j), centre), limit,
+                                   rows, itself, end);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     double d = double(p[j].at(0)) - centre.at(0);
     double d2 = d * d;
@@ -199,6 +203,8 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
       d2 += d * d;
     }
     out[kept].index = j;
+    if constexpr (Distances)
+      d2out[kept] = d2;
     kept += (d2 <= r2) & (j != self);
   }
   return kept;
@@ -206,13 +212,21 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
 
 /// Every candidate range of one particle through keepRowAvx2 (one call per
 /// particle: the constants are set up once, not per row); the count kept.
-template <int D, typename T, typename Ref>
+/// With Distances, dist[k] is the distance to the k-th neighbour kept:
+/// std::sqrt of its squared distance, four at a time (whole blocks, hence
+/// scanSlack).
+template <int D, bool Distances, typename T, typename Ref>
 __attribute__((target("avx2"))) std::size_t
 keepRangesAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
-               double r2, const CandidateRanges &ranges, Index self, Ref *__restrict out) {
+               double r2, const CandidateRanges &ranges, Index self, Ref *__restrict out,
+               double *__restrict dist) {
   std::size_t kept = 0;
   for (int r = 0; r < ranges.count; ++r)
-    kept = keepRowAvx2(p, count, centre, r2, ranges.begin[r], ranges.end[r], self, out, kept);
+    kept = keepRowAvx2<D, Distances>(p, count, centre, r2, ranges.begin[r], ranges.end[r], self,
+                                     out, dist, kept);
+  if constexpr (Distances)
+    for (std::size_t k = 0; k < kept; k += 4)
+      _mm256_storeu_pd(dist + k, _mm256_sqrt_pd(_mm256_loadu_pd(dist + k)));
   return kept;
 }
 
