@@ -103,6 +103,11 @@ void dumpModel(const Model &M, std::ostream &OS) {
       OS << ' ' << M.Kernels[I].Function;
     OS << '\n';
   }
+
+  OS << "neighbour-distances: " << (M.SearchKeepsDistances ? "kept by the search" : "none") << '\n';
+  for (const DistanceUse &U : M.Distances)
+    OS << "  " << U.Function << " @" << pos(U.Call) << ": " << U.List << ".distance(" << U.Neighbour
+       << ") for " << U.Self << (U.SelfAlways ? "" : " if it is the own particle") << '\n';
 }
 
 } // namespace wash::tr

@@ -12,10 +12,12 @@
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/DetectDimension.h"
+#include "wash/translator/Frontend/FindDistances.h"
 #include "wash/translator/Frontend/InferAccesses.h"
 #include "wash/translator/Frontend/Parse.h"
 #include "wash/translator/ModelDump.h"
 #include "wash/translator/Plan/HaloExchange.h"
+#include "wash/translator/Plan/NeighbourDistances.h"
 #include "wash/translator/Plan/NeighbourSearch.h"
 
 #include "llvm/Support/raw_ostream.h"
@@ -44,6 +46,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Mo
   if (!detectDimension(Ctx, D, ParsedDim, M) || !collectSimulation(Ctx, D, M, Refs) ||
       !inferAccesses(Ctx, D, Refs, M))
     return;
+  findNeighbourDistances(Ctx, D, M);
 
   // Analyse: facts about fields and kernels.
   summariseAccesses(M);
@@ -53,6 +56,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Mo
 
   // Plan: what the generated program must do around each kernel.
   planNeighbourSearch(M);
+  planNeighbourDistances(M);
   planHalos(M);
 
   for (const Finding &F : M.Findings)

@@ -1,7 +1,7 @@
 // The full model of the seed example: kernels in order with their access
 // sets, predictedPosition dead, position and viscosity created with warnings,
 // exactly vel a hazard in force_kernel, one search shared by the two force
-// kernels.
+// kernels, whose three loops read the distances that search keeps.
 // RUN: %wash --dump-model %wash_src/examples/ca_fluid_sim/ca_fluid_sim.cpp > %t.out 2> %t.err
 // RUN: FileCheck %s --match-full-lines --strict-whitespace < %t.out
 // RUN: FileCheck %s --check-prefix=WARN < %t.err
@@ -59,6 +59,10 @@
 // CHECK-NEXT:    own-writes: vel position
 // CHECK-NEXT:neighbour-searches
 // CHECK-NEXT:  0: CalculateDensity force_kernel
+// CHECK-NEXT:neighbour-distances: kept by the search
+// CHECK-NEXT:  CalculateDensity @168:22: neighbours.distance(neighbour) for particle
+// CHECK-NEXT:  CalculatePressureForce @191:22: neighbours.distance(neighbour) for particle
+// CHECK-NEXT:  CalculateViscosity @218:22: neighbours.distance(neighbour) for particle
 //  CHECK-NOT:{{.}}
 
 // WARN: ca_fluid_sim.cpp:144:15: warning: force 'position' is used but never registered; it is created as a vector

@@ -75,6 +75,19 @@ std::string CodePlan::writeText(const std::string &Name, const std::string &Obje
   return Target + " = wash_gen::Real(" + Value + ")";
 }
 
+std::optional<std::string> CodePlan::distanceText(const SourcePos &P,
+                                                  const std::string &Written) const {
+  auto It = DistanceAt.find({P.Line, P.Col});
+  if (It == DistanceAt.end())
+    return std::nullopt;
+  const DistanceUse &U = *It->second;
+  std::string Read = U.List + ".distance(" + U.Neighbour + ")";
+  if (U.SelfAlways)
+    return Read;
+  // A generic helper: the own particle in some calls, a neighbour in others.
+  return "(wash_gen::isSelf<decltype(" + U.Self + ")> ? " + Read + " : " + Written + ")";
+}
+
 CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   CodePlan Plan;
   Plan.Target = Target;
@@ -116,6 +129,10 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
 
   for (const Kernel &K : M.Kernels)
     Plan.Snapshotted.insert(K.Hazards.begin(), K.Hazards.end());
+
+  Plan.Distances = M.SearchKeepsDistances;
+  for (const DistanceUse &U : M.Distances)
+    Plan.DistanceAt[{U.Call.Line, U.Call.Col}] = &U;
   return Plan;
 }
 

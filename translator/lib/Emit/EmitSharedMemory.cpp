@@ -64,7 +64,7 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "#include <wash/backend/program.hpp>\n"
      << "#include <wash/" << backendName(Plan.Target) << "/for_each.hpp>\n"
      << (Plan.Target == Backend::MPI ? "#include <wash/mpi/halo.hpp>\n" : "") << "\n"
-     << "#include <cstdint>\n#include <limits>\n\n"
+     << "#include <cstdint>\n#include <limits>\n#include <type_traits>\n\n"
      << "namespace wash {\n"
      << "inline constexpr int dimensions = " << Plan.Dim << ";\n"
      << "using ParticleVec = Vec<double, " << Plan.Dim << ">;\n"
@@ -80,8 +80,14 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "using NeighbourRef = wash::backend::"
      << (Plan.SmoothingSearch ? "StoredNeighbourRef; // the search keeps every list\n"
                               : "NeighbourRef;\n")
-     << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim
-     << ", Stored, NeighbourRef>;\n\n"
+     << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim << ", Stored, NeighbourRef"
+     << (Plan.Distances
+             ? ", true>;\n"
+               "// The search keeps each neighbour's distance: the kernels read it where\n"
+               "// they compute |x_j - x_i| (docs/backends.md).\n"
+               "template <typename T>\n"
+               "inline constexpr bool isSelf = std::is_same_v<std::remove_cvref_t<T>, Self>;\n\n"
+             : ">;\n\n")
      << "struct Particles {\n";
   for (const Field *F : Plan.Stored)
     OS << "  wash::backend::Column<" << (F->Name == "id" ? "std::uint64_t"

@@ -63,7 +63,12 @@ public:
   }
 
   bool VisitCXXMemberCallExpr(CXXMemberCallExpr *E) {
-    if (!inMainFile(E->getBeginLoc()) || !isParticleMethod(E->getMethodDecl()))
+    if (!inMainFile(E->getBeginLoc()))
+      return true;
+    if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID())
+      if (auto Distance = Plan.distanceText(D.toPos(E->getBeginLoc()), text(E->getSourceRange())))
+        return replace(E->getSourceRange(), *Distance);
+    if (!isParticleMethod(E->getMethodDecl()))
       return true;
     const auto *Callee = dyn_cast<MemberExpr>(E->getCallee()->IgnoreParens());
     if (!Callee)

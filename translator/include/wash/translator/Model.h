@@ -110,6 +110,21 @@ struct SearchGroup {
   std::vector<unsigned> Kernels; ///< Indices into Model::Kernels.
 };
 
+/// `X.magnitude()` where X is the offset between a kernel's particle and one
+/// of its neighbours, an element of the neighbour list (findNeighbourDistances):
+/// the distance the search computed as it tested that neighbour.
+struct DistanceUse {
+  SourcePos Call;        ///< Where the magnitude call starts.
+  std::string Function;  ///< The function it is in.
+  std::string List;      ///< The neighbour list parameter's name.
+  std::string Neighbour; ///< The neighbour as written: `n`, `ns[k]`.
+  std::string Self;      ///< The particle parameter's name.
+  /// The parameter is a `wash::Particle &`: always the kernel's own particle.
+  /// Otherwise (a const reference or a copy, generic in the generated code)
+  /// it may be a neighbour in some calls, and the generated code checks.
+  bool SelfAlways = false;
+};
+
 struct Model {
   std::string SourceFile;
   Settings Sim;
@@ -120,6 +135,10 @@ struct Model {
   std::vector<Field> Fields; ///< Builtins first, then forces; see resolveFields.
   std::vector<SearchGroup> Searches;
   std::vector<Finding> Findings; ///< Diagnostics from the model passes.
+  /// Found by findNeighbourDistances; planNeighbourDistances keeps them only
+  /// where the search's distances equal the user's, and then sets this.
+  std::vector<DistanceUse> Distances;
+  bool SearchKeepsDistances = false;
 
   const Field *findField(const std::string &Name) const;
   bool hasErrors() const;

@@ -11,6 +11,7 @@
 #include "wash/translator/Options.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ struct CodePlan {
   /// Fields some force kernel writes on its particle and reads through
   /// neighbours: they get a snapshot column and a role-dependent accessor.
   FieldSet Snapshotted;
+  /// The neighbour lists keep distances (Model::SearchKeepsDistances), and
+  /// the magnitudes that read them, by (line, column) of the call.
+  bool Distances = false;
+  std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
 
   std::string headerName() const { return Stem + ".wash.hpp"; }
   std::string sourceName() const;
@@ -44,6 +49,9 @@ struct CodePlan {
   /// `P.<member>[Object] = Value`, converted to the storage type when float.
   std::string writeText(const std::string &Field, const std::string &Object,
                         const std::string &Value) const;
+  /// The distance to read for a magnitude call at P, if it reads one; Written
+  /// is the call as rewritten, kept where the particle may be a neighbour.
+  std::optional<std::string> distanceText(const SourcePos &P, const std::string &Written) const;
   /// The C++ type of a stored column element, and of a value in the API.
   std::string storedType(const Field &F) const;
   std::string apiType(const Field &F) const;
