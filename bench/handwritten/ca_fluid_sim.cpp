@@ -387,14 +387,14 @@ template <typename F> inline void forEachStencilRow(const Grid &G, double x, dou
 // the seed adds them in: the sums are never reassociated).
 struct NeighbourList {
   std::vector<std::uint64_t> j; // 64-bit: g++ then vectorises the map loops with doubles
-  std::vector<double> d2;
+  std::vector<double> dist; // squared distances from the scan, then distances
   std::vector<double> t0, t1, t2, t3, t4; // per-neighbour terms (map pass)
   void ensure(std::size_t m) {
     if (j.size() >= m)
       return;
     m += m / 2 + 64;
     j.resize(m);
-    for (auto *v : {&d2, &t0, &t1, &t2, &t3, &t4})
+    for (auto *v : {&dist, &t0, &t1, &t2, &t3, &t4})
       v->resize(m);
   }
 };
@@ -514,13 +514,22 @@ scanRowsAvx2(const double *__restrict px, const double *__restrict py, std::size
   }
   return m;
 }
+
+/// The distances of the m neighbours kept: sqrt of their squared distances in
+/// place, four at a time (the list has room for a whole last block).
+__attribute__((target("avx2"))) void distancesAvx2(double *d, std::uint32_t m) {
+  for (std::uint32_t k = 0; k < m; k += 4)
+    _mm256_storeu_pd(d + k, _mm256_sqrt_pd(_mm256_loadu_pd(d + k)));
+}
 #else
 #define HANDWRITTEN_AVX2 0
 #endif
 
-/// The neighbours of particle i, in canonical order: squared distances and, if
-/// WithIndex, indices (the density needs no more than the distances; the force
-/// kernels recompute the offsets, an exact subtraction, from the indices).
+/// The neighbours of particle i, in canonical order: distances (sqrt of the
+/// squared distances the test computed: `offset.magnitude()`, bit for bit)
+/// and, if WithIndex, indices (the density needs no more than the distances;
+/// the force kernels recompute the offsets, an exact subtraction, from the
+/// indices).
 template <bool WithIndex>
 inline std::uint32_t listNeighbours(const Grid &G, const double *px, const double *py,
                                     std::size_t n, std::uint32_t i, NeighbourList &L) {
@@ -530,10 +539,13 @@ inline std::uint32_t listNeighbours(const Grid &G, const double *px, const doubl
   L.ensure(R.total);
   std::uint32_t m = 0;
   std::uint64_t *jout = L.j.data();
-  double *d2out = L.d2.data();
+  double *d2out = L.dist.data();
 #if HANDWRITTEN_AVX2
-  if (hasAvx2())
-    return scanRowsAvx2<WithIndex>(px, py, n, x, y, R, i, jout, d2out);
+  if (hasAvx2()) {
+    m = scanRowsAvx2<WithIndex>(px, py, n, x, y, R, i, jout, d2out);
+    distancesAvx2(d2out, m);
+    return m;
+  }
 #endif
   for (int row = 0; row < R.count; ++row) {
     const std::uint32_t b = R.b[row], e = R.e[row];
@@ -544,6 +556,8 @@ inline std::uint32_t listNeighbours(const Grid &G, const double *px, const doubl
       m = scanRange<WithIndex>(px, py, x, y, b, e, jout, d2out, m);
     }
   }
+  for (std::uint32_t k = 0; k < m; ++k)
+    d2out[k] = std::sqrt(d2out[k]);
   return m;
 }
 
@@ -559,10 +573,10 @@ TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
 #pragma omp for schedule(dynamic, 64)
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint32_t m = listNeighbours<false>(G, px, py, n, std::uint32_t(i), L);
-      const double *d2 = L.d2.data();
+      const double *dist = L.dist.data();
       double *dk = L.t0.data(), *ndk = L.t1.data();
       for (std::uint32_t k = 0; k < m; ++k) { // map
-        const double dst = std::sqrt(d2[k]);  // offset.magnitude()
+        const double dst = dist[k];           // offset.magnitude(), from the scan
         const double q = r - dst;
         const bool in = !(dst >= r);
         dk[k] = in ? cDensity * q * q : 0.0;        // DensityKernel
@@ -585,7 +599,7 @@ TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
 /// The terms of each neighbour in force_kernel (independent: vectorised).
 TERMS_LOOPS inline void forceTerms(std::uint32_t m, const std::uint64_t *__restrict nj,
                                    const double *__restrict px, const double *__restrict py,
-                                   const double x, const double y, const double *__restrict nd2,
+                                   const double x, const double y, const double *__restrict ndist,
                                    const double *__restrict rho, const double *__restrict nrho,
                                    const double *__restrict pres, const double *__restrict npres,
                                    const double pressure, const double nearPressure,
@@ -595,7 +609,7 @@ TERMS_LOOPS inline void forceTerms(std::uint32_t m, const std::uint64_t *__restr
   for (std::uint32_t k = 0; k < m; ++k) {
     const std::uint64_t j = nj[k];
     const double ox = px[j] - x, oy = py[j] - y; // offsetToNeighbour
-    const double dst = std::sqrt(nd2[k]);
+    const double dst = ndist[k]; // from the scan
     const bool pos = dst > 0.0;
     const double dirx = pos ? ox / dst : 0.0;
     const double diry = pos ? oy / dst : 1.0;
@@ -635,13 +649,13 @@ void forceAndUpdate(Particles &P, const Grid &G, const Scene &scene) {
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint32_t m = listNeighbours<true>(G, px, py, n, std::uint32_t(i), L);
       const std::uint64_t *__restrict nj = L.j.data();
-      const double *__restrict nd2 = L.d2.data();
+      const double *__restrict ndist = L.dist.data();
       double *__restrict tx1 = L.t0.data(), *__restrict ty1 = L.t1.data(),
              *__restrict tx2 = L.t2.data(), *__restrict ty2 = L.t3.data(),
              *__restrict tw = L.t4.data();
       // CalculatePressureForce (and the viscosity kernel's weights): map.
       const double density = rho[i];
-      forceTerms(m, nj, px, py, px[i], py[i], nd2, rho, nrho, pres, npres, pres[i], npres[i], tx1, ty1, tx2,
+      forceTerms(m, nj, px, py, px[i], py[i], ndist, rho, nrho, pres, npres, pres[i], npres[i], tx1, ty1, tx2,
                  ty2, tw);
       // ... reduce, in canonical order.
       double pfx = 0.0, pfy = 0.0;
