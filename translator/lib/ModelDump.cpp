@@ -85,6 +85,8 @@ void dumpModel(const Model &M, std::ostream &OS) {
        << '\n';
     printSet(M, OS, "own-reads", K.OwnReads);
     printSet(M, OS, "own-writes", K.OwnWrites);
+    if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)
+      printSet(M, OS, "always-writes", K.AlwaysWrites);
     if (K.Kind == KernelKind::Reduction)
       OS << "    reduce: " << K.ReduceOp << " into '" << K.Variable << "'\n";
     if (K.Kind != KernelKind::Force)
@@ -103,6 +105,14 @@ void dumpModel(const Model &M, std::ostream &OS) {
       OS << ' ' << M.Kernels[I].Function;
     OS << '\n';
   }
+
+  OS << "rewritten-after-search:";
+  if (M.RewrittenAfterSearch.empty())
+    OS << " -";
+  for (const Field &F : M.Fields)
+    if (M.RewrittenAfterSearch.count(F.Name))
+      OS << ' ' << F.Name;
+  OS << '\n';
 
   OS << "neighbour-distances: " << (M.SearchKeepsDistances ? "kept by the search" : "none") << '\n';
   for (const DistanceUse &U : M.Distances)

@@ -12,6 +12,7 @@
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/DetectDimension.h"
+#include "wash/translator/Frontend/FindAlwaysWrites.h"
 #include "wash/translator/Frontend/FindDistances.h"
 #include "wash/translator/Frontend/InferAccesses.h"
 #include "wash/translator/Frontend/Parse.h"
@@ -19,6 +20,7 @@
 #include "wash/translator/Plan/HaloExchange.h"
 #include "wash/translator/Plan/NeighbourDistances.h"
 #include "wash/translator/Plan/NeighbourSearch.h"
+#include "wash/translator/Plan/SearchReorder.h"
 
 #include "llvm/Support/raw_ostream.h"
 
@@ -47,6 +49,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Mo
       !inferAccesses(Ctx, D, Refs, M))
     return;
   findNeighbourDistances(Ctx, D, M);
+  findAlwaysWrites(Ctx, Refs, M);
 
   // Analyse: facts about fields and kernels.
   summariseAccesses(M);
@@ -57,6 +60,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Mo
   // Plan: what the generated program must do around each kernel.
   planNeighbourSearch(M);
   planNeighbourDistances(M);
+  planSearchReorder(M);
   planHalos(M);
 
   for (const Finding &F : M.Findings)

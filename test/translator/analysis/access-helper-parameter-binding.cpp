@@ -21,5 +21,6 @@ int main() {
 // CHECK:      0: force kernel
 // CHECK-NEXT:   own-reads: vel
 // CHECK-NEXT:   own-writes: mass
+// CHECK-NEXT:   always-writes: mass
 // CHECK-NEXT:   neighbour-reads: density
 // CHECK-NEXT:   hazards: -

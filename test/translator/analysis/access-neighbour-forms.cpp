@@ -41,5 +41,6 @@ int main() {
 // CHECK:      0: force kernel
 // CHECK-NEXT:   own-reads: -
 // CHECK-NEXT:   own-writes: heat
+// CHECK-NEXT:   always-writes: heat
 // CHECK-NEXT:   neighbour-reads: pos vel acc density mass smoothing_length heat
 // CHECK-NEXT:   hazards: heat

@@ -1,7 +1,8 @@
 // The full model of the seed example: kernels in order with their access
 // sets, predictedPosition dead, position and viscosity created with warnings,
 // exactly vel a hazard in force_kernel, one search shared by the two force
-// kernels, whose three loops read the distances that search keeps.
+// kernels, whose three loops read the distances that search keeps, and
+// which rewrites density, nearDensity, pressure and viscosity before any read.
 // RUN: %wash --dump-model %wash_src/examples/ca_fluid_sim/ca_fluid_sim.cpp > %t.out 2> %t.err
 // RUN: FileCheck %s --match-full-lines --strict-whitespace < %t.out
 // RUN: FileCheck %s --check-prefix=WARN < %t.err
@@ -35,9 +36,11 @@
 // CHECK-NEXT:  1: update VelocityUpdate @104:5
 // CHECK-NEXT:    own-reads: pos vel position
 // CHECK-NEXT:    own-writes: pos vel
+// CHECK-NEXT:    always-writes: pos vel
 // CHECK-NEXT:  2: force CalculateDensity @105:5
 // CHECK-NEXT:    own-reads: pos
 // CHECK-NEXT:    own-writes: density nearDensity
+// CHECK-NEXT:    always-writes: density nearDensity
 // CHECK-NEXT:    neighbour-reads: pos
 // CHECK-NEXT:    hazards: -
 // CHECK-NEXT:    search: 0
@@ -46,6 +49,7 @@
 // CHECK-NEXT:  3: force force_kernel @106:5
 // CHECK-NEXT:    own-reads: pos vel density nearDensity
 // CHECK-NEXT:    own-writes: vel pressure viscosity
+// CHECK-NEXT:    always-writes: vel pressure viscosity
 // CHECK-NEXT:    neighbour-reads: pos vel density nearDensity
 // CHECK-NEXT:    hazards: vel
 // CHECK-NEXT:    search: 0
@@ -54,11 +58,14 @@
 // CHECK-NEXT:  4: update UpdatePositions @107:5
 // CHECK-NEXT:    own-reads: vel position
 // CHECK-NEXT:    own-writes: position
+// CHECK-NEXT:    always-writes: position
 // CHECK-NEXT:  5: update HandleCollisions @108:5
 // CHECK-NEXT:    own-reads: vel position
 // CHECK-NEXT:    own-writes: vel position
+// CHECK-NEXT:    always-writes: vel position
 // CHECK-NEXT:neighbour-searches
 // CHECK-NEXT:  0: CalculateDensity force_kernel
+// CHECK-NEXT:rewritten-after-search: density nearDensity pressure viscosity
 // CHECK-NEXT:neighbour-distances: kept by the search
 // CHECK-NEXT:  CalculateDensity @168:22: neighbours.distance(neighbour) for particle
 // CHECK-NEXT:  CalculatePressureForce @191:22: neighbours.distance(neighbour) for particle

@@ -33,6 +33,7 @@ TEST(ModelDump, ForceKernelSection) {
   EXPECT_NE(Out.find("  0: force k @9:3\n"
                      "    own-reads: -\n"
                      "    own-writes: t\n"
+                     "    always-writes: -\n"
                      "    neighbour-reads: t\n"
                      "    hazards: t\n"
                      "    search: 0\n"

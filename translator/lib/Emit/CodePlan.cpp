@@ -131,6 +131,7 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
     Plan.Snapshotted.insert(K.Hazards.begin(), K.Hazards.end());
 
   Plan.Distances = M.SearchKeepsDistances;
+  Plan.RewrittenAfterSearch = M.RewrittenAfterSearch;
   for (const DistanceUse &U : M.Distances)
     Plan.DistanceAt[{U.Call.Line, U.Call.Col}] = &U;
   return Plan;

@@ -99,7 +99,22 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "  template <typename F> void forEachColumn(F f) {\n";
   for (const Field *F : Plan.Stored)
     OS << "    f(" << Plan.Member.at(F->Name) << ");\n";
-  OS << "  }\n};\ninline Particles P;\n";
+  OS << "  }\n";
+  if (Plan.reordersFewer()) {
+    std::string Skipped;
+    for (const Field *F : Plan.Stored)
+      if (Plan.RewrittenAfterSearch.count(F->Name))
+        Skipped += (Skipped.empty() ? "" : ", ") + Plan.Member.at(F->Name);
+    OS << "  /// Calls f(column) for every column a search's sort must reorder: not\n"
+       << "  /// " << Skipped << ", which every particle sets again after each\n"
+       << "  /// search before anything reads them.\n"
+       << "  template <typename F> void forEachReorderedColumn(F f) {\n";
+    for (const Field *F : Plan.Stored)
+      if (!Plan.RewrittenAfterSearch.count(F->Name))
+        OS << "    f(" << Plan.Member.at(F->Name) << ");\n";
+    OS << "  }\n";
+  }
+  OS << "};\ninline Particles P;\n";
 
   for (const std::string &F : Plan.Snapshotted) {
     const std::string &Col = Plan.Member.at(F);
@@ -133,15 +148,15 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
      << "wash::backend::CellGrid<" << Plan.Dim << "> grid;\n"
      << "std::vector<Index> order;\n"
      << "wash::backend::Images images; // real particles, and periodic images\n"
-     << neighbourTableDeclaration(Plan)
-     << "\n"
+     << neighbourTableDeclaration(Plan) << "\n"
      << "/// A neighbour search: images across periodic faces, then particles sorted\n"
      << "/// by (cell, id), see docs/semantics.md.\n"
      << "void search(const wash::backend::SearchGeometry &at, const wash::detail::Box &box) {\n"
      << "  wash::backend::dropImages(P, images);\n"
      << "  wash::backend::addImages<" << Plan.Dim << ">(P, images.owned, box, at.reach, images);\n"
      << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
-     << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
+     << "  P." << (Plan.reordersFewer() ? "forEachReorderedColumn" : "forEachColumn")
+     << "([](auto &column) { wash::backend::permute(column, order); });\n"
      << "  images.permuted(order);\n"
      << neighbourTableBuild(Plan, "images.owned") << "}\n\n";
   OS << "wash::detail::Frame frame() {\n"

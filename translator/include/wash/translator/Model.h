@@ -82,6 +82,9 @@ struct Kernel {
 
   // Filled by summariseAccesses.
   FieldSet OwnReads, OwnWrites, NeighbourReads;
+  // Filled by findAlwaysWrites (update and force kernels): own fields set on
+  // every path through the kernel.
+  FieldSet AlwaysWrites;
   // Filled by findHazards: own writes also read through neighbours.
   FieldSet Hazards;
   // Filled by planNeighbourSearch (force kernels only).
@@ -139,6 +142,10 @@ struct Model {
   /// where the search's distances equal the user's, and then sets this.
   std::vector<DistanceUse> Distances;
   bool SearchKeepsDistances = false;
+  /// Fields every search is followed by a rewrite of, for every particle,
+  /// before anything reads them (planSearchReorder): the search's reordering
+  /// need not carry their old values.
+  FieldSet RewrittenAfterSearch;
 
   const Field *findField(const std::string &Name) const;
   bool hasErrors() const;

@@ -37,6 +37,15 @@ struct CodePlan {
   /// The neighbour lists keep distances (Model::SearchKeepsDistances), and
   /// the magnitudes that read them, by (line, column) of the call.
   bool Distances = false;
+  /// Model::RewrittenAfterSearch: columns the shared-memory search's sort
+  /// leaves in the old order (the MPI backend moves every column).
+  FieldSet RewrittenAfterSearch;
+  bool reordersFewer() const {
+    for (const Field *F : Stored)
+      if (RewrittenAfterSearch.count(F->Name))
+        return true;
+    return false;
+  }
   std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
 
   std::string headerName() const { return Stem + ".wash.hpp"; }

@@ -1,0 +1,134 @@
+//===- FindAlwaysWrites.cpp -----------------------------------------------===//
+#include "wash/translator/Frontend/FindAlwaysWrites.h"
+#include "wash/translator/Frontend/WashApi.h"
+
+#include "clang/AST/ExprCXX.h"
+#include "clang/AST/RecursiveASTVisitor.h"
+#include "clang/AST/StmtCXX.h"
+
+#include <map>
+
+using namespace clang;
+
+namespace wash::tr {
+namespace {
+
+/// S may leave the function or jump: a return, goto, or co_return in it.
+bool mayLeave(const Stmt *S) {
+  struct Finder : RecursiveASTVisitor<Finder> {
+    bool Found = false;
+    bool TraverseLambdaExpr(LambdaExpr *) { return true; } // its returns are its own
+    bool VisitReturnStmt(ReturnStmt *) { return !(Found = true); }
+    bool VisitGotoStmt(GotoStmt *) { return !(Found = true); }
+    bool VisitIndirectGotoStmt(IndirectGotoStmt *) { return !(Found = true); }
+    bool VisitCoreturnStmt(CoreturnStmt *) { return !(Found = true); }
+  } F;
+  F.TraverseStmt(const_cast<Stmt *>(S));
+  return F.Found;
+}
+
+class AlwaysWrites {
+public:
+  explicit AlwaysWrites(ASTContext &Ctx) : Ctx(Ctx) {}
+
+  /// The fields function FD sets on every path on the particle its parameter
+  /// Self is bound to.
+  FieldSet of(const FunctionDecl *FD, unsigned Self, unsigned Depth = 0) {
+    FieldSet Out;
+    const FunctionDecl *Def = FD ? FD->getDefinition() : nullptr;
+    if (!Def || !Def->hasBody() || Self >= Def->getNumParams() || Depth > 16 ||
+        !isUserCode(Ctx.getSourceManager(), Def))
+      return Out;
+    auto Key = std::make_pair(Def, Self);
+    if (auto It = Memo.find(Key); It != Memo.end())
+      return It->second;
+    Memo[Key] = {}; // recursion (reported elsewhere) counts nothing
+    if (!hasGoto(Def->getBody()))
+      block(Def->getBody(), Def->getParamDecl(Self), Depth, Out);
+    return Memo[Key] = Out;
+  }
+
+private:
+  static bool hasGoto(const Stmt *Body) {
+    struct Finder : RecursiveASTVisitor<Finder> {
+      bool Found = false;
+      bool VisitGotoStmt(GotoStmt *) { return !(Found = true); }
+      bool VisitIndirectGotoStmt(IndirectGotoStmt *) { return !(Found = true); }
+    } F;
+    F.TraverseStmt(const_cast<Stmt *>(Body));
+    return F.Found;
+  }
+
+  /// The statements of a block in order, up to the first that may leave.
+  void block(const Stmt *S, const ParmVarDecl *Self, unsigned Depth, FieldSet &Out) {
+    const auto *Block = dyn_cast<CompoundStmt>(S);
+    if (!Block)
+      return statement(S, Self, Depth, Out);
+    for (const Stmt *Child : Block->body()) {
+      if (mayLeave(Child))
+        return;
+      statement(Child, Self, Depth, Out);
+    }
+  }
+
+  void statement(const Stmt *S, const ParmVarDecl *Self, unsigned Depth, FieldSet &Out) {
+    if (isa<CompoundStmt>(S))
+      return block(S, Self, Depth, Out);
+    const auto *E = dyn_cast<Expr>(S);
+    if (!E)
+      return; // if, loops, declarations...: nothing counts as always done
+    E = E->IgnoreImplicit();
+    if (const auto *Cast = dyn_cast<CStyleCastExpr>(E); Cast && Cast->getType()->isVoidType())
+      E = Cast->getSubExpr()->IgnoreImplicit();
+    const auto *Call = dyn_cast<CallExpr>(E);
+    if (!Call || !Call->getDirectCallee())
+      return;
+    const FunctionDecl *Callee = Call->getDirectCallee();
+    if (isParticleMethod(Callee)) {
+      const auto *Member = dyn_cast<CXXMemberCallExpr>(Call);
+      if (Member && isSelf(Member->getImplicitObjectArgument(), Self))
+        if (auto Field = setterField(Member))
+          Out.insert(*Field);
+      return;
+    }
+    unsigned Skip = isa<CXXOperatorCallExpr>(Call) && isa<CXXMethodDecl>(Callee) ? 1 : 0;
+    for (unsigned I = Skip; I < Call->getNumArgs(); ++I)
+      if (isSelf(Call->getArg(I), Self) && I - Skip < Callee->getNumParams() &&
+          Callee->getParamDecl(I - Skip)->getType()->isReferenceType()) {
+        FieldSet Inner = of(Callee, I - Skip, Depth + 1);
+        Out.insert(Inner.begin(), Inner.end());
+      }
+  }
+
+  static bool isSelf(const Expr *E, const ParmVarDecl *Self) {
+    const auto *DRE = dyn_cast<DeclRefExpr>(E->IgnoreParenImpCasts());
+    return DRE && DRE->getDecl() == Self;
+  }
+
+  /// The field a setter call sets: set_<builtin>, or a force by constant name.
+  std::optional<std::string> setterField(const CXXMemberCallExpr *Call) {
+    StringRef Name = Call->getMethodDecl()->getName();
+    if (Name == "set_force_scalar" || Name == "set_force_vector")
+      return Call->getNumArgs() ? evaluateString(Call->getArg(0), Ctx) : std::nullopt;
+    if (Name.starts_with("set_"))
+      return Name.drop_front(4).str();
+    return std::nullopt;
+  }
+
+  ASTContext &Ctx;
+  std::map<std::pair<const FunctionDecl *, unsigned>, FieldSet> Memo;
+};
+
+} // namespace
+
+void findAlwaysWrites(ASTContext &Ctx, const AstRefs &Refs, Model &M) {
+  AlwaysWrites Finder(Ctx);
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    Kernel &K = M.Kernels[I];
+    K.AlwaysWrites.clear();
+    if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)
+      K.AlwaysWrites = Finder.of(Refs.Kernels[I], 0);
+  }
+}
+
+} // namespace wash::tr
