@@ -43,18 +43,24 @@ public:
     if (n > std::numeric_limits<Index>::max())
       throw std::length_error("wash: more particles than the index type holds");
     radius_ = r;
-    // Cell bounds from the extreme coordinates (the cell is monotone in them).
+    // Cell bounds from the extreme coordinates (the cell is monotone in them),
+    // every axis in one pass.
     std::array<std::int64_t, D> lo{}, hi{};
-    for (int a = 0; a < D && n > 0; ++a) {
-      double least = std::numeric_limits<double>::infinity(), most = -least;
-      WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static) reduction(min : least) \
-               reduction(max : most))
-      for (std::size_t p = 0; p < n; ++p) {
-        least = std::min(least, double(pos[p].at(a)));
-        most = std::max(most, double(pos[p].at(a)));
+    double least[D], most[D];
+    for (int a = 0; a < D; ++a) {
+      least[a] = std::numeric_limits<double>::infinity();
+      most[a] = -least[a];
+    }
+    WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static) reduction(min : least[:D]) \
+             reduction(max : most[:D]))
+    for (std::size_t p = 0; p < n; ++p)
+      for (int a = 0; a < D; ++a) {
+        least[a] = std::min(least[a], double(pos[p].at(a)));
+        most[a] = std::max(most[a], double(pos[p].at(a)));
       }
-      lo[a] = coordinate(least);
-      hi[a] = coordinate(most);
+    for (int a = 0; a < D && n > 0; ++a) {
+      lo[a] = coordinate(least[a]);
+      hi[a] = coordinate(most[a]);
     }
     std::size_t cells = 1;
     for (int a = 0; a < D; ++a) {
@@ -80,13 +86,24 @@ public:
     for (std::size_t c = 0; c < cells; ++c)
       cellStart_[c + 1] += cellStart_[c];
     order.resize(n);
-    std::vector<Index> next(cellStart_.begin(), cellStart_.end() - 1);
+    next_.assign(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t p = 0; p < n; ++p)
-      order[next[cell_[p]]++] = Index(p);
+      order[next_[cell_[p]]++] = Index(p);
+    // Ids ascending inside each cell. A cell's particles arrive as a few runs
+    // already in id order (one per cell they were in before), a handful in
+    // all: insertion sort.
     WASH_OMP(parallel for if(n >= parallelMinimum) schedule(dynamic, 256))
-    for (std::size_t c = 0; c < cells; ++c)
-      std::sort(order.begin() + cellStart_[c], order.begin() + cellStart_[c + 1],
-                [&](Index a, Index b) { return id[a] < id[b]; });
+    for (std::size_t c = 0; c < cells; ++c) {
+      const Index b = cellStart_[c], e = cellStart_[c + 1];
+      for (Index k = b + 1; k < e; ++k) {
+        const Index moving = order[k];
+        const std::uint64_t key = id[moving];
+        Index to = k;
+        for (; to > b && id[order[to - 1]] > key; --to)
+          order[to] = order[to - 1];
+        order[to] = moving;
+      }
+    }
   }
 
   /// Candidate ranges for a particle at p: the cells overlapping [p - r, p + r]
@@ -137,7 +154,7 @@ private:
 
   double radius_ = 1.0;
   std::array<std::int64_t, D> lo_{}, dims_{};
-  std::vector<Index> cellStart_, cell_;
+  std::vector<Index> cellStart_, cell_, next_;
 };
 
 } // namespace wash::backend
