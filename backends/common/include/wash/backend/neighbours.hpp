@@ -156,7 +156,7 @@ private:
   }
 
   /// Appends the candidates [b, e) within sqrt(r2) of centre to out[kept..]
-  /// (and with Distances their squared distances to d2[kept..]).
+  /// (and with Distances their squared distances to d2out[kept..]).
   static std::size_t keep(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
                           Index b, Index e, Ref *__restrict out, double *__restrict d2out,
                           std::size_t kept) {
