@@ -18,7 +18,7 @@ namespace {
 
 /// The scalar test's squared distance, written out: (dx*dx + dy*dy) [+ dz*dz].
 template <int D, typename T>
-double squaredDistance(const wash::Vec<T, D> &q, const wash::Vec<double, D> &c) {
+double writtenOutSquaredDistance(const wash::Vec<T, D> &q, const wash::Vec<double, D> &c) {
   double d = double(q.at(0)) - c.at(0);
   double d2 = d * d;
   for (int a = 1; a < D; ++a) {
@@ -35,7 +35,7 @@ std::vector<std::uint64_t> scalarRow(const std::vector<wash::Vec<T, D>> &p,
                                      Index self) {
   std::vector<std::uint64_t> kept;
   for (Index j = b; j < e; ++j)
-    if (j != self && squaredDistance(p[j], c) <= r2)
+    if (j != self && writtenOutSquaredDistance(p[j], c) <= r2)
       kept.push_back(j);
   return kept;
 }
@@ -58,7 +58,7 @@ std::vector<std::uint64_t> avx2Row(const std::vector<wash::Vec<T, D>> &p,
   for (std::size_t k = 0; k < kept; ++k) {
     rows.push_back(out[k].index);
     EXPECT_EQ(again[k].index, out[k].index);
-    EXPECT_EQ(d2[k], squaredDistance(p[out[k].index], c)) << "row " << out[k].index;
+    EXPECT_EQ(d2[k], writtenOutSquaredDistance(p[out[k].index], c)) << "row " << out[k].index;
   }
   return rows;
 }

@@ -8,8 +8,9 @@ static std::string pos(const SourcePos &P) {
 }
 
 /// A set in field order, so the dump does not depend on name sorting.
-static void printSet(const Model &M, std::ostream &OS, const char *Label, const FieldSet &S) {
-  OS << "    " << Label << ":";
+static void printSet(const Model &M, std::ostream &OS, const char *Label, const FieldSet &S,
+                     const char *Indent = "    ") {
+  OS << Indent << Label << ":";
   if (S.empty())
     OS << " -";
   for (const Field &F : M.Fields)
@@ -106,15 +107,9 @@ void dumpModel(const Model &M, std::ostream &OS) {
     OS << '\n';
   }
 
-  OS << "rewritten-after-search:";
-  if (M.RewrittenAfterSearch.empty())
-    OS << " -";
-  for (const Field &F : M.Fields)
-    if (M.RewrittenAfterSearch.count(F.Name))
-      OS << ' ' << F.Name;
-  OS << '\n';
+  printSet(M, OS, "rewritten-after-search", M.RewrittenAfterSearch, "");
 
-  OS << "neighbour-distances: " << (M.SearchKeepsDistances ? "kept by the search" : "none") << '\n';
+  OS << "neighbour-distances: " << (M.searchKeepsDistances() ? "kept by the search" : "none") << '\n';
   for (const DistanceUse &U : M.Distances)
     OS << "  " << U.Function << " @" << pos(U.Call) << ": " << U.List << ".distance(" << U.Neighbour
        << ") for " << U.Self << (U.SelfAlways ? "" : " if it is the own particle") << '\n';

@@ -28,8 +28,7 @@ Model withUse(std::vector<Access> ForceAccesses) {
 bool kept(Model &M) {
   summariseAccesses(M);
   planNeighbourDistances(M);
-  EXPECT_EQ(M.SearchKeepsDistances, !M.Distances.empty());
-  return M.SearchKeepsDistances;
+  return M.searchKeepsDistances();
 }
 
 } // namespace

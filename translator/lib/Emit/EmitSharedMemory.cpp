@@ -81,7 +81,7 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << (Plan.SmoothingSearch ? "StoredNeighbourRef; // the search keeps every list\n"
                               : "NeighbourRef;\n")
      << "using NeighbourList = wash::backend::Neighbours<" << Plan.Dim << ", Stored, NeighbourRef"
-     << (Plan.Distances
+     << (Plan.keepsDistances()
              ? ", true>;\n"
                "// The search keeps each neighbour's distance: the kernels read it where\n"
                "// they compute |x_j - x_i| (docs/backends.md).\n"

@@ -13,15 +13,29 @@ using namespace clang;
 namespace wash::tr {
 namespace {
 
-/// S may leave the function or jump: a return, goto, or co_return in it.
-bool mayLeave(const Stmt *S) {
+/// The jumps in S that end a straight path: returns of the function itself
+/// (a lambda's are its own), and gotos anywhere.
+struct Jumps {
+  bool Returns = false, Gotos = false;
+};
+Jumps jumpsIn(const Stmt *S) {
   struct Finder : RecursiveASTVisitor<Finder> {
-    bool Found = false;
-    bool TraverseLambdaExpr(LambdaExpr *) { return true; } // its returns are its own
-    bool VisitReturnStmt(ReturnStmt *) { return !(Found = true); }
-    bool VisitGotoStmt(GotoStmt *) { return !(Found = true); }
-    bool VisitIndirectGotoStmt(IndirectGotoStmt *) { return !(Found = true); }
-    bool VisitCoreturnStmt(CoreturnStmt *) { return !(Found = true); }
+    Jumps Found;
+    unsigned InLambda = 0;
+    bool TraverseLambdaExpr(LambdaExpr *L) {
+      ++InLambda;
+      bool Continue = RecursiveASTVisitor::TraverseLambdaExpr(L);
+      --InLambda;
+      return Continue;
+    }
+    bool VisitReturnStmt(ReturnStmt *) { return returned(); }
+    bool VisitCoreturnStmt(CoreturnStmt *) { return returned(); }
+    bool returned() {
+      Found.Returns |= InLambda == 0;
+      return true;
+    }
+    bool VisitGotoStmt(GotoStmt *) { return !(Found.Gotos = true); }
+    bool VisitIndirectGotoStmt(IndirectGotoStmt *) { return !(Found.Gotos = true); }
   } F;
   F.TraverseStmt(const_cast<Stmt *>(S));
   return F.Found;
@@ -43,29 +57,20 @@ public:
     if (auto It = Memo.find(Key); It != Memo.end())
       return It->second;
     Memo[Key] = {}; // recursion (reported elsewhere) counts nothing
-    if (!hasGoto(Def->getBody()))
+    if (!jumpsIn(Def->getBody()).Gotos)
       block(Def->getBody(), Def->getParamDecl(Self), Depth, Out);
     return Memo[Key] = Out;
   }
 
 private:
-  static bool hasGoto(const Stmt *Body) {
-    struct Finder : RecursiveASTVisitor<Finder> {
-      bool Found = false;
-      bool VisitGotoStmt(GotoStmt *) { return !(Found = true); }
-      bool VisitIndirectGotoStmt(IndirectGotoStmt *) { return !(Found = true); }
-    } F;
-    F.TraverseStmt(const_cast<Stmt *>(Body));
-    return F.Found;
-  }
-
-  /// The statements of a block in order, up to the first that may leave.
+  /// The statements of a block in order, up to the first that may return (the
+  /// function has no goto).
   void block(const Stmt *S, const ParmVarDecl *Self, unsigned Depth, FieldSet &Out) {
     const auto *Block = dyn_cast<CompoundStmt>(S);
     if (!Block)
       return statement(S, Self, Depth, Out);
     for (const Stmt *Child : Block->body()) {
-      if (mayLeave(Child))
+      if (jumpsIn(Child).Returns)
         return;
       statement(Child, Self, Depth, Out);
     }

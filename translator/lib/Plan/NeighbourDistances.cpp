@@ -11,7 +11,6 @@ void planNeighbourDistances(Model &M) {
   });
   if (M.Sim.Precision != "double" || M.searchesBySmoothingLength() || ForceWritesPos)
     M.Distances.clear();
-  M.SearchKeepsDistances = !M.Distances.empty();
 }
 
 } // namespace wash::tr

@@ -139,9 +139,8 @@ struct Model {
   std::vector<SearchGroup> Searches;
   std::vector<Finding> Findings; ///< Diagnostics from the model passes.
   /// Found by findNeighbourDistances; planNeighbourDistances keeps them only
-  /// where the search's distances equal the user's, and then sets this.
+  /// where the search's distances equal the user's.
   std::vector<DistanceUse> Distances;
-  bool SearchKeepsDistances = false;
   /// Fields every search is followed by a rewrite of, for every particle,
   /// before anything reads them (planSearchReorder): the search's reordering
   /// need not carry their old values.
@@ -150,6 +149,8 @@ struct Model {
   const Field *findField(const std::string &Name) const;
   bool hasErrors() const;
   bool searchesBySmoothingLength() const { return Sim.SmoothingLengthSupport.has_value(); }
+  /// Once planned: the neighbour search keeps distances for the uses left.
+  bool searchKeepsDistances() const { return !Distances.empty(); }
 };
 
 /// The built-in particle properties in dump order.

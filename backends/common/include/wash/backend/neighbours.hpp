@@ -116,18 +116,10 @@ private:
     std::size_t candidates = 0;
     for (int r = 0; r < ranges.count; ++r)
       candidates += ranges.end[r] - ranges.begin[r];
-    std::vector<Ref> &buffer = threadBuffer();
-    if (buffer.size() < candidates + scanSlack)
-      buffer.resize(candidates + scanSlack); // the vector scan writes whole blocks
-    Ref *out = buffer.data();
-    double *dist = nullptr;
-    if constexpr (Distances) {
-      std::vector<double> &distances = threadDistances();
-      if (distances.size() < candidates + scanSlack)
-        distances.resize(candidates + scanSlack);
-      dist = distances.data();
-      dist_ = dist;
-    }
+    Ref *out = room(threadBuffer(), candidates);
+    double *dist = nullptr; // squared distances, then distances
+    if constexpr (Distances)
+      dist_ = dist = room(threadDistances(), candidates);
     std::size_t kept = 0;
     const PosT *p = pos.data();
 #if WASH_SCAN_AVX2
@@ -165,12 +157,7 @@ private:
       return keepPlanar(p, centre, r2, b, e, out, d2out, kept);
 #endif
     for (Index j = b; j < e; ++j) {
-      double d = double(p[j].at(0)) - centre.at(0);
-      double d2 = d * d; // the reference's 0 + d*d: exact, d*d is never -0
-      for (int a = 1; a < D; ++a) {
-        d = double(p[j].at(a)) - centre.at(a);
-        d2 += d * d;
-      }
+      const double d2 = squaredDistance(p[j], centre);
       out[kept].index = j;
       if constexpr (Distances)
         d2out[kept] = d2;
@@ -198,15 +185,22 @@ private:
       std::memcpy(&d, &p[j], sizeof d);
       d -= c;
       d *= d;
+      const double d2 = d[0] + d[1];
       out[kept].index = j;
       if constexpr (Distances)
-        d2out[kept] = d[0] + d[1];
-      kept += d[0] + d[1] <= r2;
+        d2out[kept] = d2;
+      kept += d2 <= r2;
     }
     return kept;
   }
 #endif
 
+  /// v's data, with room for n candidates (the vector scan writes whole blocks).
+  template <typename T> static T *room(std::vector<T> &v, std::size_t n) {
+    if (v.size() < n + scanSlack)
+      v.resize(n + scanSlack);
+    return v.data();
+  }
   static std::vector<Ref> &threadBuffer() {
     thread_local std::vector<Ref> buffer;
     return buffer;

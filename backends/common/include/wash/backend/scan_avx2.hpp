@@ -33,6 +33,20 @@ namespace wash::backend {
 /// room for the candidates plus this many.
 inline constexpr std::size_t scanSlack = 4;
 
+/// The squared distance every path of the neighbour test computes, in double:
+/// (dx*dx + dy*dy) [+ dz*dz]; the reference starts from 0 + dx*dx, the same
+/// number (dx*dx is never -0).
+template <int D, typename T>
+inline double squaredDistance(const Vec<T, D> &q, const Vec<double, D> &centre) {
+  double d = double(q.at(0)) - centre.at(0);
+  double d2 = d * d;
+  for (int a = 1; a < D; ++a) {
+    d = double(q.at(a)) - centre.at(a);
+    d2 += d * d;
+  }
+  return d2;
+}
+
 #if WASH_SCAN_AVX2
 
 /// Whether this machine runs AVX2 code.
@@ -196,12 +210,7 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
     kept = keepBlock<D, Distances>(out, d2out, kept, blockDistances(loadBlock(p, j), centre), limit,
                                    rows, itself, end);
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
-    double d = double(p[j].at(0)) - centre.at(0);
-    double d2 = d * d;
-    for (int a = 1; a < D; ++a) {
-      d = double(p[j].at(a)) - centre.at(a);
-      d2 += d * d;
-    }
+    const double d2 = squaredDistance(p[j], centre);
     out[kept].index = j;
     if constexpr (Distances)
       d2out[kept] = d2;

@@ -34,9 +34,10 @@ struct CodePlan {
   /// Fields some force kernel writes on its particle and reads through
   /// neighbours: they get a snapshot column and a role-dependent accessor.
   FieldSet Snapshotted;
-  /// The neighbour lists keep distances (Model::SearchKeepsDistances), and
-  /// the magnitudes that read them, by (line, column) of the call.
-  bool Distances = false;
+  /// The magnitudes that read the distances the neighbour lists keep, by
+  /// (line, column) of the call; none if the lists keep no distances.
+  std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
+  bool keepsDistances() const { return !DistanceAt.empty(); }
   /// Model::RewrittenAfterSearch: columns the shared-memory search's sort
   /// leaves in the old order (the MPI backend moves every column).
   FieldSet RewrittenAfterSearch;
@@ -46,7 +47,6 @@ struct CodePlan {
         return true;
     return false;
   }
-  std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
 
   std::string headerName() const { return Stem + ".wash.hpp"; }
   std::string sourceName() const;

@@ -9,8 +9,8 @@ namespace wash::tr {
 /// search's distance is bit for bit the user's: double positions (the search
 /// computes in double, a float Vec's magnitude in float), the one-radius
 /// search (the smoothing-length rule reorders its lists), and no force kernel
-/// writing its particle's position (the search saw the old one). Sets
-/// Model::SearchKeepsDistances if any remain. Needs summariseAccesses.
+/// writing its particle's position (the search saw the old one): the search
+/// keeps distances if any remain. Needs summariseAccesses.
 void planNeighbourDistances(Model &M);
 
 } // namespace wash::tr
