@@ -109,7 +109,8 @@ void dumpModel(const Model &M, std::ostream &OS) {
 
   printSet(M, OS, "rewritten-after-search", M.RewrittenAfterSearch, "");
 
-  OS << "neighbour-distances: " << (M.searchKeepsDistances() ? "kept by the search" : "none") << '\n';
+  OS << "neighbour-distances: " << (M.searchKeepsDistances() ? "kept by the search" : "none")
+     << '\n';
   for (const DistanceUse &U : M.Distances)
     OS << "  " << U.Function << " @" << pos(U.Call) << ": " << U.List << ".distance(" << U.Neighbour
        << ") for " << U.Self << (U.SelfAlways ? "" : " if it is the own particle") << '\n';
