@@ -10,11 +10,16 @@
 #   hand-written serial run at that size, peak RSS per particle (bytes)
 #
 # Measurement: wall time of the whole process (date +%s%N around it), the
-# minimum of --repeat runs. "ns/p-step" is the cost of the steps alone:
-#   (wall(S steps) - wall(0 steps)) / (N * S)
-# where the 0-step run of the same program (spawn, the final frame the program
-# always writes, startup) is measured the same way; "wall s" is the S-step run
-# as it is. Peak RSS comes from /usr/bin/time -f %M (GNU time) when installed.
+# minimum of --repeat runs. "ns/p-step" is the cost of a step once running:
+#   (wall(S steps) - wall(B steps)) / (N * (S - B))
+# where the B-step run of the same program (B = --base-steps, default 1) is
+# measured the same way: start-up, spawn, the final frame the program always
+# writes and the first step's one-off work (first-touch of the columns, the
+# first sort from spawn order) cancel out. B = 0 would leave in the difference
+# between writing the final frame after steps (17 significant digits a value)
+# and after none (mostly short values like "0"): at 1M particles that is more
+# than a second, which 20 steps would count as 60 ns per particle-step.
+# "wall s" is the S-step run as it is. Peak RSS comes from /usr/bin/time -f %M (GNU time) when installed.
 # Nothing here is asserted: speed is measured, never tested.
 #
 # Which binary runs at size N: for the seed size 4032, the program as given;
@@ -33,6 +38,7 @@
 #                          200 at <= 65536, 10 above)
 #   --steps-for N:S        steps at size N only (repeatable)
 #   --repeat R             runs per measurement, minimum taken (default 1)
+#   --base-steps B         steps of the run subtracted (default 1, see above)
 #   --program PATH         a further program run at every thread count
 #                          (OMP_NUM_THREADS), e.g. build/bin/ca_fluid_sim-openmp
 #   --serial-program PATH  a further program run once, threads 1,
@@ -48,6 +54,7 @@ threads_list="1 2"
 steps_all=""
 declare -A steps_for=()
 repeat=1
+base_steps=1
 with_ref=1
 csv=""
 parallel_programs=()
@@ -64,6 +71,7 @@ while [[ $# -gt 0 ]]; do
     --steps-for) [[ $2 =~ ^([0-9]+):([0-9]+)$ ]] || die "--steps-for expects N:S, got '$2'"
                  steps_for[${BASH_REMATCH[1]}]=${BASH_REMATCH[2]}; shift 2 ;;
     --repeat) repeat=$2; shift 2 ;;
+    --base-steps) base_steps=$2; shift 2 ;;
     --program) parallel_programs+=("$2"); shift 2 ;;
     --serial-program) serial_programs+=("$2"); shift 2 ;;
     --no-reference) with_ref=0; shift ;;
@@ -73,6 +81,7 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 [[ $repeat =~ ^[1-9][0-9]*$ ]] || die "--repeat expects a positive integer"
+[[ $base_steps =~ ^[0-9]+$ ]] || die "--base-steps expects a count of steps"
 
 have_time=0
 if [[ -x /usr/bin/time ]] && /usr/bin/time -f %M -o /dev/null true 2>/dev/null; then
@@ -155,11 +164,13 @@ bench_one() {
     add_row "$n" "$label" "$threads" "$steps" "failed" "-" "-"
     return
   fi
-  read -r wall0 _ <<<"$(measure "$threads" 0 "$@")"
   local ns="-"
-  if [[ $wall0 != failed ]] && (( steps > 0 )); then
-    ns=$(awk -v w="$wall" -v w0="$wall0" -v n="$n" -v s="$steps" \
-      'BEGIN { printf "%.1f", (w - w0) * 1e9 / (n * s) }')
+  if (( steps > base_steps )); then
+    read -r wall0 _ <<<"$(measure "$threads" "$base_steps" "$@")"
+    if [[ $wall0 != failed ]]; then
+      ns=$(awk -v w="$wall" -v w0="$wall0" -v n="$n" -v s="$((steps - base_steps))" \
+        'BEGIN { printf "%.1f", (w - w0) * 1e9 / (n * s) }')
+    fi
   fi
   add_row "$n" "$label" "$threads" "$steps" "$wall" "$ns" "$rss"
 }
@@ -208,4 +219,4 @@ done
 if (( ! have_time )); then
   echo "(peak RSS not measured: GNU time is not installed at /usr/bin/time)"
 fi
-echo "(ns/p-step = (wall of S steps - wall of 0 steps) / (particles * S); ratio = ns/p-step over the hand-written program's with 1 thread)"
+echo "(ns/p-step = (wall of S steps - wall of B steps) / (particles * (S - B)), B = $base_steps; ratio = ns/p-step over the hand-written program's with 1 thread)"

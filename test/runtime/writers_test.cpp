@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <limits>
 #include <sstream>
 
 using namespace wash::detail;
@@ -49,12 +53,61 @@ TEST(Writers, CsvValuesReadBackAsTheSameDoubles) {
   }
 }
 
+// docs/semantics.md promises printf's %.17g, digit for digit: users diff and
+// parse these files.
+TEST(Writers, ValuesAreWrittenAsPrintfWrites17SignificantDigits) {
+  std::vector<double> values = {0.0,
+                                -0.0,
+                                1.0 / 3.0,
+                                1e-300,
+                                5e-324,
+                                1e22,
+                                1e21,
+                                123456789.0,
+                                -2.5e-7,
+                                1e17,
+                                0.1 + 0.2,
+                                std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::infinity(),
+                                -std::numeric_limits<double>::infinity(),
+                                std::numeric_limits<double>::quiet_NaN()};
+  std::uint64_t bits = 0x9E3779B97F4A7C15u;
+  for (int k = 0; k < 2000; ++k) { // random bit patterns, every exponent
+    bits ^= bits << 13, bits ^= bits >> 7, bits ^= bits << 17;
+    double v;
+    std::memcpy(&v, &bits, sizeof v);
+    values.push_back(v);
+  }
+  Frame f;
+  f.dimensions = 2;
+  f.columns = {{"pos", 2, {}}, {"density", 1, values}};
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    f.ids.push_back(k);
+    f.columns[0].values.insert(f.columns[0].values.end(), {0.0, 0.0});
+  }
+  std::ostringstream csv, vtp;
+  writeCsv(f, csv);
+  writeVtp(f, vtp);
+  std::string csvRows = "id,x,y,density\n", vtpArray;
+  char text[64];
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    std::snprintf(text, sizeof text, "%.17g", values[k]);
+    csvRows += std::to_string(k) + ",0,0," + text + "\n";
+    vtpArray += (k ? " " : "") + std::string(text);
+  }
+  EXPECT_EQ(csv.str(), csvRows);
+  EXPECT_NE(vtp.str().find("format=\"ascii\">\n          " + vtpArray + "\n"), std::string::npos);
+}
+
 TEST(Writers, VtpHasPointsPaddedTo3DAndEveryColumn) {
   std::ostringstream out;
   writeVtp(sampleFrame(), out);
   const std::string s = out.str();
   EXPECT_NE(s.find("NumberOfPoints=\"3\""), std::string::npos);
   EXPECT_NE(s.find("2 2.5 0 0 0.5 0 1 1.5 0"), std::string::npos); // z = 0 in 2D
+  // One vertex cell per point: cell k is point k and ends at offset k + 1.
+  EXPECT_NE(s.find("Name=\"connectivity\" format=\"ascii\">\n          0 1 2\n"), std::string::npos);
+  EXPECT_NE(s.find("Name=\"offsets\" format=\"ascii\">\n          1 2 3\n"), std::string::npos);
   for (const char *name : {"Name=\"id\"", "Name=\"vel\"", "Name=\"density\"", "Name=\"pressure\""})
     EXPECT_NE(s.find(name), std::string::npos) << name;
   EXPECT_NE(s.find("</VTKFile>"), std::string::npos);
