@@ -561,6 +561,14 @@ inline std::uint32_t listNeighbours(const Grid &G, const double *px, const doubl
   return m;
 }
 
+/// Particles per dynamic chunk of the neighbour loops: 64, or a 64th of a
+/// thread's share when that is more, as the generated code's (wash/openmp/
+/// for_each.hpp): with small chunks every thread pulls all rows of cells into
+/// its own cache, which at a million particles they outgrow.
+std::size_t chunkFor(std::size_t n) {
+  return std::max<std::size_t>(64, n / (64 * std::size_t(omp_get_max_threads())));
+}
+
 /// CalculateDensity, plus the per-particle pressures the pressure force reads.
 TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
   const std::size_t n = P.n;
@@ -570,7 +578,7 @@ TERMS_LOOPS void calculateDensity(Particles &P, const Grid &G) {
 #pragma omp parallel
   {
     NeighbourList L;
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, chunkFor(n))
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint32_t m = listNeighbours<false>(G, px, py, n, std::uint32_t(i), L);
       const double *dist = L.dist.data();
@@ -645,7 +653,7 @@ void forceAndUpdate(Particles &P, const Grid &G, const Scene &scene) {
 #pragma omp parallel
   {
     NeighbourList L;
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, chunkFor(n))
     for (std::size_t i = 0; i < n; ++i) {
       const std::uint32_t m = listNeighbours<true>(G, px, py, n, std::uint32_t(i), L);
       const std::uint64_t *__restrict nj = L.j.data();
