@@ -9,18 +9,23 @@
 #   size, program, threads, steps, wall s, ns per particle-step, ratio to the
 #   hand-written serial run at that size, peak RSS per particle (bytes)
 #
-# Measurement: "ns/p-step" is the cost of a step, start-up, spawn and output
-# excluded. Every wash program (generated or hand-written) times its own step
-# loop and prints it ("... ns per particle-step" in its summary line): that
-# figure, the minimum of --repeat runs, is used. For a program that prints
-# none (the reference build) it is the wall time of the whole process (date
-# +%s%N around it, minimum of --repeat runs) of S steps less that of B:
+# Measurement: "ns/p-step" is the cost of a step once running: that of S
+# steps less that of B (B = --base-steps, default 1), per particle and step.
+# Every wash program (generated or hand-written) times its own step loop and
+# prints it ("... ns per particle-step" in its summary line), so start-up,
+# spawn and output, and their disk noise, are out of it; B takes out the
+# first step's one-off work (first touch of the columns, the first sort from
+# spawn order), which 20 steps at 1M particles would otherwise count at a
+# twentieth:
+#   (own(S) * S - own(B) * B) / (S - B)
+# each the minimum of --repeat runs. For a program that prints none (the
+# reference build) it is the wall time of the whole process (date +%s%N
+# around it, minimum of --repeat runs):
 #   (wall(S steps) - wall(B steps)) / (N * (S - B))
-# with B = --base-steps (default 1), so that start-up, spawn, the final frame
-# and the first step's one-off work cancel. (B = 0 would leave in the
-# difference between writing the final frame after steps, 17 significant
-# digits a value, and after none, mostly "0": at 1M particles over a second,
-# which 20 steps would count as 60 ns per particle-step.)
+# (B = 0 there would leave in the difference between writing the final frame
+# after steps, 17 significant digits a value, and after none, mostly "0": at
+# 1M particles over a second, which 20 steps would count as 60 ns per
+# particle-step.)
 # "wall s" is the S-step run as it is. Peak RSS comes from /usr/bin/time -f %M (GNU time) when installed.
 # Nothing here is asserted: speed is measured, never tested.
 #
@@ -172,12 +177,14 @@ bench_one() {
     add_row "$n" "$label" "$threads" "$steps" "failed" "-" "-"
     return
   fi
-  local ns="-"
-  if [[ $own != - ]]; then
-    ns=$own
-  elif (( steps > base_steps )); then
-    read -r wall0 _ <<<"$(measure "$threads" "$base_steps" "$@")"
-    if [[ $wall0 != failed ]]; then
+  local ns="-" own0
+  if (( steps > base_steps )); then
+    read -r wall0 _ own0 <<<"$(measure "$threads" "$base_steps" "$@")"
+    if [[ $own != - && ( $own0 != - || $base_steps == 0 ) ]]; then
+      [[ $own0 == - ]] && own0=0
+      ns=$(awk -v a="$own" -v a0="$own0" -v s="$steps" -v b="$base_steps" \
+        'BEGIN { printf "%.1f", (a * s - a0 * b) / (s - b) }')
+    elif [[ $wall0 != failed ]]; then
       ns=$(awk -v w="$wall" -v w0="$wall0" -v n="$n" -v s="$((steps - base_steps))" \
         'BEGIN { printf "%.1f", (w - w0) * 1e9 / (n * s) }')
     fi
@@ -229,4 +236,4 @@ done
 if (( ! have_time )); then
   echo "(peak RSS not measured: GNU time is not installed at /usr/bin/time)"
 fi
-echo "(ns/p-step = the program's own timing of its steps; for a program that prints none, (wall of S steps - wall of B steps) / (particles * (S - B)), B = $base_steps; ratio = ns/p-step over the hand-written program's with 1 thread)"
+echo "(ns/p-step = steps B+1..S of the program's own timing of its steps; for a program that prints none, (wall of S steps - wall of B steps) / (particles * (S - B)); B = $base_steps; ratio = ns/p-step over the hand-written program's with 1 thread)"
