@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace wash::backend;
@@ -92,6 +93,40 @@ TEST(CellGrid, LatticeOnCellBorders) {
   onEveryScanPath([&] {
     EXPECT_EQ((backendNeighbours<2>(pos, id, 0.5)), (referenceNeighbours<2>(pos, id, 0.5)));
   });
+}
+
+// The grid finds cells by multiplying with the inverse cell size; it must
+// still give floor(x / size) exactly, the reference's cell, on and around
+// every cell border, where the product and the quotient round apart.
+TEST(CellGrid, CellCoordinateIsTheQuotientFloored) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t checked = 0;
+  for (double size : {0.35, 0.1, 1.0 / 3.0, 0.7, 1e-3, 37.5, 0.2 * 1.5, 3e-7}) {
+    CellGrid<2> grid;
+    Column<wash::Vec2D> none;
+    Column<std::uint64_t> noIds;
+    std::vector<Index> order;
+    grid.sort(none, noIds, size, order);
+    std::vector<double> xs = {0.0, -0.0, 1e-320, -1e-320, 1e15, -1e15, 4.5e15 * size};
+    for (std::int64_t k = -3000; k <= 3000; ++k) { // borders, and a scan's p - r, p + r
+      const double border = double(k) * size;
+      for (double x : {border, border + size, border - size}) {
+        double up = x, down = x;
+        for (int n = 0; n < 3;
+             ++n, up = std::nextafter(up, 1e300), down = std::nextafter(down, -1e300))
+          xs.push_back(up), xs.push_back(down);
+      }
+    }
+    for (int k = 0; k < 20000; ++k)
+      xs.push_back(unit(rng) * 1e4 * size);
+    for (double x : xs) {
+      ASSERT_EQ(grid.coordinate(x), static_cast<std::int64_t>(std::floor(x / size)))
+          << "x = " << x << ", cell size " << size;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 200000u);
 }
 
 TEST(CellGrid, SortPutsCellsInRowOrderAndIdsAscendingInside) {

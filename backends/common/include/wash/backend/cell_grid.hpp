@@ -29,6 +29,7 @@ struct CandidateRanges {
   static constexpr int capacity = 100;
   std::array<Index, capacity> begin, end;
   int count = 0;
+  std::size_t total = 0; ///< candidates in all ranges
 };
 
 template <int D> class CellGrid {
@@ -43,6 +44,7 @@ public:
     if (n > std::numeric_limits<Index>::max())
       throw std::length_error("wash: more particles than the index type holds");
     radius_ = r;
+    inverse_ = 1.0 / r;
     // Cell bounds from the extreme coordinates (the cell is monotone in them),
     // every axis in one pass.
     std::array<std::int64_t, D> lo{}, hi{};
@@ -108,51 +110,69 @@ public:
 
   /// Candidate ranges for a particle at p: the cells overlapping [p - r, p + r]
   /// on each axis, in canonical order (the reference's cell set exactly), for a
-  /// search radius r of at most 4 cells.
+  /// search radius r of at most 4 cells. Runs once per particle and scan, so
+  /// it keeps its count in a local and sums the candidates as it goes.
   void candidates(const Vec<double, D> &p, double r, CandidateRanges &out) const {
     std::array<std::int64_t, D> from, to;
     for (int a = 0; a < D; ++a) {
       from[a] = std::max(coordinate(p.at(a) - r), lo_[a]);
       to[a] = std::min(coordinate(p.at(a) + r), lo_[a] + dims_[a] - 1);
     }
-    out.count = 0;
-    if constexpr (D == 2) {
-      for (std::int64_t y = from[1]; y <= to[1]; ++y)
-        addRow(out, {from[0], y}, to[0]);
-    } else {
-      for (std::int64_t z = from[2]; z <= to[2]; ++z)
+    int count = 0;
+    std::size_t total = 0;
+    const auto addRow = [&](const std::array<std::int64_t, D> &first) {
+      const std::size_t start = linear(first);
+      const Index b = cellStart_[start], e = cellStart_[start + std::size_t(to[0] - from[0]) + 1];
+      if (b == e)
+        return;
+      if (count == CandidateRanges::capacity)
+        throw std::length_error("wash: a search radius spans too many cells");
+      out.begin[count] = b;
+      out.end[count] = e;
+      ++count;
+      total += e - b;
+    };
+    if (from[0] <= to[0]) {
+      if constexpr (D == 2) {
         for (std::int64_t y = from[1]; y <= to[1]; ++y)
-          addRow(out, {from[0], y, z}, to[0]);
+          addRow({from[0], y});
+      } else {
+        for (std::int64_t z = from[2]; z <= to[2]; ++z)
+          for (std::int64_t y = from[1]; y <= to[1]; ++y)
+            addRow({from[0], y, z});
+      }
     }
+    out.count = count;
+    out.total = total;
   }
 
   double radius() const { return radius_; }
 
-private:
+  /// floor(x / radius_), the division rounded as written, then floored (the
+  /// reference's cell), mostly without dividing: x * (1 / radius_) is within
+  /// 4e-16 relative of that quotient, so the floors agree unless the product
+  /// lies within a hair of an integer, and then the division decides. (A
+  /// division is the slowest step of setting up a scan.)
   std::int64_t coordinate(double x) const {
+    const double q = x * inverse_;
+    std::int64_t whole = static_cast<std::int64_t>(q); // truncated, then floored
+    whole -= q < static_cast<double>(whole);
+    // NaN or huge for a NaN or infinite x, which then takes the division.
+    const double above = q - static_cast<double>(whole);
+    const double hair = 1e-12 * (std::fabs(q) + 1.0);
+    if (above > hair && above < 1.0 - hair) [[likely]]
+      return whole;
     return static_cast<std::int64_t>(std::floor(x / radius_));
   }
+
+private:
   std::size_t linear(const std::array<std::int64_t, D> &c) const {
     std::size_t index = 0;
     for (int a = D - 1; a >= 0; --a)
       index = index * std::size_t(dims_[a]) + std::size_t(c[a] - lo_[a]);
     return index;
   }
-  void addRow(CandidateRanges &out, std::array<std::int64_t, D> first, std::int64_t lastX) const {
-    if (first[0] > lastX)
-      return;
-    std::size_t start = linear(first);
-    Index b = cellStart_[start], e = cellStart_[start + std::size_t(lastX - first[0]) + 1];
-    if (b < e) {
-      if (out.count == CandidateRanges::capacity)
-        throw std::length_error("wash: a search radius spans too many cells");
-      out.begin[out.count] = b;
-      out.end[out.count] = e;
-      ++out.count;
-    }
-  }
-
-  double radius_ = 1.0;
+  double radius_ = 1.0, inverse_ = 1.0;
   std::array<std::int64_t, D> lo_{}, dims_{};
   std::vector<Index> cellStart_, cell_, next_;
 };

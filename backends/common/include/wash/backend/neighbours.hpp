@@ -113,13 +113,10 @@ private:
     const double r2 = radius * radius;
     CandidateRanges ranges;
     grid.candidates(centre, radius, ranges);
-    std::size_t candidates = 0;
-    for (int r = 0; r < ranges.count; ++r)
-      candidates += ranges.end[r] - ranges.begin[r];
-    Ref *out = room(threadBuffer(), candidates);
+    Ref *out = room(threadBuffer(), ranges.total);
     double *dist = nullptr; // squared distances, then distances
     if constexpr (Distances)
-      dist_ = dist = room(threadDistances(), candidates);
+      dist_ = dist = room(threadDistances(), ranges.total);
     std::size_t kept = 0;
     const PosT *p = pos.data();
 #if WASH_SCAN_AVX2
