@@ -63,9 +63,9 @@ inline bool &avx2Scan() {
   return use;
 }
 
-/// The candidate each lane of a block's squared distances holds: 2D sums
-/// come out of their pairwise adds as 0 2 1 3, and the tables below follow
-/// that order instead of a shuffle putting the lanes back.
+/// The candidate each lane of a block's squared distances holds: 2D
+/// coordinates come out of their unpacking as 0 2 1 3, and the tables below
+/// follow that order instead of a shuffle putting the lanes back.
 template <int D> inline constexpr int laneCandidate[4] = {0, 1, 2, 3};
 template <> inline constexpr int laneCandidate<2>[4] = {0, 2, 1, 3};
 
@@ -152,14 +152,15 @@ __attribute__((target("avx2"))) inline Block<D> loadBlock(const Vec<T, D> *p, In
 }
 
 /// The four squared distances from centre, dx*dx + dy*dy lane by lane: the
-/// (x, y) pairs squared and added pairwise, which leaves them in
-/// laneCandidate<2> order (d0 d2 d1 d3).
+/// x and the y of the four unpacked from the (x, y) pairs, which leaves them
+/// in laneCandidate<2> order (d0 d2 d1 d3).
 __attribute__((target("avx2"))) inline __m256d blockDistances(const Block<2> &block,
                                                               const Vec<double, 2> &centre) {
-  const __m256d origin = _mm256_setr_pd(centre.at(0), centre.at(1), centre.at(0), centre.at(1));
-  const __m256d first = _mm256_sub_pd(block.part[0], origin);  // dx0 dy0 dx1 dy1
-  const __m256d second = _mm256_sub_pd(block.part[1], origin); // dx2 dy2 dx3 dy3
-  return _mm256_hadd_pd(_mm256_mul_pd(first, first), _mm256_mul_pd(second, second));
+  const __m256d x = _mm256_unpacklo_pd(block.part[0], block.part[1]); // x0 x2 x1 x3
+  const __m256d y = _mm256_unpackhi_pd(block.part[0], block.part[1]); // y0 y2 y1 y3
+  const __m256d dx = _mm256_sub_pd(x, _mm256_set1_pd(centre.at(0)));
+  const __m256d dy = _mm256_sub_pd(y, _mm256_set1_pd(centre.at(1)));
+  return _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
 }
 
 /// The same in 3D, (dx*dx + dy*dy) + dz*dz, the coordinates regrouped by
