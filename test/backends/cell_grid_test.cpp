@@ -129,6 +129,44 @@ TEST(CellGrid, CellCoordinateIsTheQuotientFloored) {
   EXPECT_GT(checked, 200000u);
 }
 
+// A scan with the cell size as radius takes the cells before and after the
+// particle's from one product; they must be those of x - r and x + r divided.
+TEST(CellGrid, NeighbourCellsAreThoseOfTheIntervalsEnds) {
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::size_t fast = 0, slow = 0;
+  for (double size : {0.35, 0.1, 1.0 / 3.0, 0.7, 1e-3, 37.5, 0.2 * 1.5, 3e-7}) {
+    CellGrid<2> grid;
+    Column<wash::Vec2D> none;
+    Column<std::uint64_t> noIds;
+    std::vector<Index> order;
+    grid.sort(none, noIds, size, order);
+    std::vector<double> xs;
+    for (std::int64_t k = -3000; k <= 3000; ++k) {
+      double up = double(k) * size, down = up;
+      for (int n = 0; n < 3;
+           ++n, up = std::nextafter(up, 1e300), down = std::nextafter(down, -1e300))
+        xs.push_back(up), xs.push_back(down);
+    }
+    for (int k = 0; k < 20000; ++k)
+      xs.push_back(unit(rng) * 1e4 * size);
+    for (double x : xs) {
+      std::int64_t first, last;
+      if (!grid.neighbourCells(x, size, first, last)) {
+        ++slow;
+        continue;
+      }
+      ++fast;
+      ASSERT_EQ(first, static_cast<std::int64_t>(std::floor((x - size) / size))) << "x = " << x;
+      ASSERT_EQ(last, static_cast<std::int64_t>(std::floor((x + size) / size))) << "x = " << x;
+    }
+    std::int64_t first, last;
+    EXPECT_FALSE(grid.neighbourCells(0.5 * size, 0.5 * size, first, last)) << "another radius";
+  }
+  EXPECT_GT(fast, 150000u); // the random ones, mostly
+  EXPECT_GT(slow, 50000u);  // the borders
+}
+
 TEST(CellGrid, SortPutsCellsInRowOrderAndIdsAscendingInside) {
   Column<wash::Vec2D> pos{{1.5, 0.2}, {0.2, 0.2}, {0.3, 1.1}, {0.1, 0.1}};
   Column<std::uint64_t> id{0, 3, 1, 2};
