@@ -44,7 +44,8 @@
 #   --steps S              steps at every size (default: 1000 at <= 4032,
 #                          200 at <= 65536, 10 above)
 #   --steps-for N:S        steps at size N only (repeatable)
-#   --repeat R             runs per measurement, minimum taken (default 1)
+#   --repeat R             rounds of every run, interleaved; minimum taken
+#                          (default 1)
 #   --base-steps B         steps of the run subtracted (default 1, see above)
 #   --program PATH         a further program run at every thread count
 #                          (OMP_NUM_THREADS), e.g. build/bin/ca_fluid_sim-openmp
@@ -117,100 +118,130 @@ binary_at() {
   echo "$dir/${base/ca_fluid_sim/ca_fluid_sim_$n}"
 }
 
-# measure THREADS STEPS CMD...: prints "wall_s rss_kb own_ns" (best wall of
-# $repeat runs, the largest peak RSS, the best "ns per particle-step" the
-# program printed or "-").
+# measure THREADS STEPS CMD...: one run; prints "wall_s rss_kb own_ns" (the
+# "ns per particle-step" the program printed, or "-"), or "failed".
 measure() {
   local threads=$1 steps=$2
   shift 2
-  local best="" rss="" own="" r
-  for ((r = 0; r < repeat; r++)); do
-    rm -rf "$work/out"
-    local t0 t1 status=0
-    t0=$(date +%s%N)
-    if (( have_time )); then
-      OMP_NUM_THREADS=$threads /usr/bin/time -f %M -o "$work/rss" \
-        "$@" --steps "$steps" --out "$work/out" >"$work/log" 2>"$work/err" || status=$?
-    else
-      OMP_NUM_THREADS=$threads "$@" --steps "$steps" --out "$work/out" \
-        >"$work/log" 2>"$work/err" || status=$?
-    fi
-    t1=$(date +%s%N)
-    if (( status != 0 )); then
-      echo "run_bench.sh: '$*' --steps $steps failed (status $status):" >&2
-      tail -n 5 "$work/log" "$work/err" >&2
-      echo "failed -"
-      return
-    fi
-    local wall=$(( t1 - t0 )) line
-    if [[ -z $best ]] || (( wall < best )); then best=$wall; fi
-    line=$(grep -o '[0-9.]* ns per particle-step' "$work/log" || true)
-    if [[ -n $line ]] && { [[ -z $own ]] || awk -v a="${line%% *}" -v b="$own" 'BEGIN { exit !(a < b) }'; }; then
-      own=${line%% *}
-    fi
-    if (( have_time )); then
-      local kb
-      kb=$(tail -n 1 "$work/rss")
-      if [[ -z $rss ]] || (( kb > rss )); then rss=$kb; fi
-    fi
-  done
-  echo "$(awk -v ns="$best" 'BEGIN { printf "%.4f", ns / 1e9 }') ${rss:--} ${own:--}"
+  rm -rf "$work/out"
+  local t0 t1 status=0
+  t0=$(date +%s%N)
+  if (( have_time )); then
+    OMP_NUM_THREADS=$threads /usr/bin/time -f %M -o "$work/rss" \
+      "$@" --steps "$steps" --out "$work/out" >"$work/log" 2>"$work/err" || status=$?
+  else
+    OMP_NUM_THREADS=$threads "$@" --steps "$steps" --out "$work/out" \
+      >"$work/log" 2>"$work/err" || status=$?
+  fi
+  t1=$(date +%s%N)
+  if (( status != 0 )); then
+    echo "run_bench.sh: '$*' --steps $steps failed (status $status):" >&2
+    tail -n 5 "$work/log" "$work/err" >&2
+    echo "failed"
+    return
+  fi
+  local line rss="-"
+  line=$(grep -o '[0-9.]* ns per particle-step' "$work/log" || true)
+  (( have_time )) && rss=$(tail -n 1 "$work/rss")
+  echo "$(( t1 - t0 )) $rss ${line%% *}" | awk '{ printf "%s %s %s\n", $1, $2, ($3 == "" ? "-" : $3) }'
 }
 
-rows=() # size|program|threads|steps|wall|ns|rss_kb
-add_row() { rows+=("$1|$2|$3|$4|$5|$6|$7"); }
+# lower KEY VALUE / higher KEY VALUE: keep the least / greatest value of
+# best[KEY] over the rounds ("-" counts as none).
+declare -A best=()
+lower() {
+  [[ $2 == - ]] && return
+  if [[ -z ${best[$1]:-} ]] || awk -v a="$2" -v b="${best[$1]}" 'BEGIN { exit !(a < b) }'; then
+    best[$1]=$2
+  fi
+}
+higher() {
+  [[ $2 == - ]] && return
+  if [[ -z ${best[$1]:-} ]] || (( $2 > best[$1] )); then best[$1]=$2; fi
+}
 
-# bench_one SIZE LABEL THREADS CMD...
-bench_one() {
-  local n=$1 label=$2 threads=$3
+# The runs, --repeat rounds of every configuration in turn (so that the
+# VM's drift over minutes hits every program alike), each round one run of S
+# steps and one of B. Configuration c is configs[c] = "size|label|threads"
+# and its command cmd_c (an array).
+configs=()
+add_config() { # SIZE LABEL THREADS CMD...
+  local c=${#configs[@]}
+  configs+=("$1|$2|$3")
   shift 3
-  local steps
+  eval "cmd_$c=(\"\$@\")"
+}
+run_config() { # C: one round of configuration C
+  local c=$1 n label threads steps wall rss own
+  IFS='|' read -r n label threads <<<"${configs[$c]}"
+  local -n cmd="cmd_$c"
   steps=$(steps_at "$n")
-  if [[ ! -x $1 ]]; then
-    add_row "$n" "$label" "$threads" "$steps" "not built" "-" "-"
-    return
-  fi
+  [[ -x ${cmd[0]} && -z ${best[$c.failed]:-} ]] || return 0
   echo "  $label, $n particles, $threads thread(s), $steps steps ..." >&2
-  local wall rss own wall0
-  read -r wall rss own <<<"$(measure "$threads" "$steps" "$@")"
-  if [[ $wall == failed ]]; then
-    add_row "$n" "$label" "$threads" "$steps" "failed" "-" "-"
-    return
-  fi
-  local ns="-" own0
+  read -r wall rss own <<<"$(measure "$threads" "$steps" "${cmd[@]}")"
+  if [[ $wall == failed ]]; then best[$c.failed]=1; return 0; fi
+  lower "$c.wall" "$wall"; higher "$c.rss" "$rss"; lower "$c.own" "$own"
   if (( steps > base_steps )); then
-    read -r wall0 _ own0 <<<"$(measure "$threads" "$base_steps" "$@")"
-    if [[ $own != - && ( $own0 != - || $base_steps == 0 ) ]]; then
-      [[ $own0 == - ]] && own0=0
-      ns=$(awk -v a="$own" -v a0="$own0" -v s="$steps" -v b="$base_steps" \
-        'BEGIN { printf "%.1f", (a * s - a0 * b) / (s - b) }')
-    elif [[ $wall0 != failed ]]; then
-      ns=$(awk -v w="$wall" -v w0="$wall0" -v n="$n" -v s="$((steps - base_steps))" \
-        'BEGIN { printf "%.1f", (w - w0) * 1e9 / (n * s) }')
-    fi
+    read -r wall rss own <<<"$(measure "$threads" "$base_steps" "${cmd[@]}")"
+    [[ $wall == failed ]] && return 0
+    lower "$c.wall0" "$wall"; lower "$c.own0" "$own"
   fi
-  add_row "$n" "$label" "$threads" "$steps" "$wall" "$ns" "$rss"
 }
 
 echo "run_bench.sh: $(nproc) CPUs, sizes: $sizes, threads: $threads_list, repeat $repeat" >&2
 for n in $sizes; do
   if (( with_ref )); then
     ref=$(binary_at "$bin/ca_fluid_sim-reference" "$n")
-    bench_one "$n" "$(basename "$ref")" 1 "$ref"
+    add_config "$n" "$(basename "$ref")" 1 "$ref"
   fi
   for t in $threads_list; do
-    bench_one "$n" "ca_fluid_sim-handwritten" "$t" "$bin/ca_fluid_sim-handwritten" --size "$n"
+    add_config "$n" "ca_fluid_sim-handwritten" "$t" "$bin/ca_fluid_sim-handwritten" --size "$n"
   done
   for p in "${serial_programs[@]+"${serial_programs[@]}"}"; do
     b=$(binary_at "$p" "$n")
-    bench_one "$n" "$(basename "$b")" 1 "$b"
+    add_config "$n" "$(basename "$b")" 1 "$b"
   done
   for p in "${parallel_programs[@]+"${parallel_programs[@]}"}"; do
     b=$(binary_at "$p" "$n")
     for t in $threads_list; do
-      bench_one "$n" "$(basename "$b")" "$t" "$b"
+      add_config "$n" "$(basename "$b")" "$t" "$b"
     done
   done
+done
+for ((round = 0; round < repeat; round++)); do
+  for c in "${!configs[@]}"; do
+    run_config "$c"
+  done
+done
+
+rows=() # size|program|threads|steps|wall|ns|rss_kb
+for c in "${!configs[@]}"; do
+  IFS='|' read -r n label threads <<<"${configs[$c]}"
+  unset -n cmd
+  declare -n cmd="cmd_$c"
+  steps=$(steps_at "$n")
+  if [[ ! -x ${cmd[0]} ]]; then
+    rows+=("$n|$label|$threads|$steps|not built|-|-")
+    continue
+  fi
+  if [[ -n ${best[$c.failed]:-} || -z ${best[$c.wall]:-} ]]; then
+    rows+=("$n|$label|$threads|$steps|failed|-|-")
+    continue
+  fi
+  wall=$(awk -v ns="${best[$c.wall]}" 'BEGIN { printf "%.4f", ns / 1e9 }')
+  own=${best[$c.own]:--} own0=${best[$c.own0]:--} wall0=${best[$c.wall0]:--}
+  ns="-"
+  if (( steps > base_steps )); then
+    if [[ $own != - && ( $own0 != - || $base_steps == 0 ) ]]; then
+      [[ $own0 == - ]] && own0=0
+      ns=$(awk -v a="$own" -v a0="$own0" -v s="$steps" -v b="$base_steps" \
+        'BEGIN { printf "%.1f", (a * s - a0 * b) / (s - b) }')
+    elif [[ $wall0 != - ]]; then
+      ns=$(awk -v w="${best[$c.wall]}" -v w0="$wall0" -v n="$n" -v s="$((steps - base_steps))" \
+        'BEGIN { printf "%.1f", (w - w0) / (n * s) }')
+    fi
+  fi
+  rows+=("$n|$label|$threads|$steps|$wall|$ns|${best[$c.rss]:--}")
 done
 
 # The table, with the ratio to the hand-written serial run at the same size.
