@@ -95,31 +95,54 @@ TEST(CellGrid, LatticeOnCellBorders) {
   });
 }
 
+namespace {
+
+/// Cell sizes whose borders k * size are inexact in binary, and two that are.
+constexpr double cellSizes[] = {0.35, 0.1, 1.0 / 3.0, 0.7, 1e-3, 37.5, 0.2 * 1.5, 3e-7};
+
+/// An empty grid with cells of `size`: enough to ask it for cells.
+CellGrid<2> gridOfSize(double size) {
+  CellGrid<2> grid;
+  Column<wash::Vec2D> none;
+  Column<std::uint64_t> noIds;
+  std::vector<Index> order;
+  grid.sort(none, noIds, size, order);
+  return grid;
+}
+
+/// Coordinates where a multiplication and a division may floor apart: the
+/// borders k * size of 6001 cells, k * size +- size (a scan's p - r and p + r
+/// for particles on a border), three floating-point steps either way of each;
+/// then 20000 random ones.
+std::vector<double> bordersAndMore(double size, std::mt19937_64 &rng) {
+  std::vector<double> xs;
+  for (std::int64_t k = -3000; k <= 3000; ++k) {
+    const double border = double(k) * size;
+    for (double x : {border, border + size, border - size}) {
+      double up = x, down = x;
+      for (int n = 0; n < 3;
+           ++n, up = std::nextafter(up, 1e300), down = std::nextafter(down, -1e300))
+        xs.push_back(up), xs.push_back(down);
+    }
+  }
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (int k = 0; k < 20000; ++k)
+    xs.push_back(unit(rng) * 1e4 * size);
+  return xs;
+}
+
+} // namespace
+
 // The grid finds cells by multiplying with the inverse cell size; it must
 // still give floor(x / size) exactly, the reference's cell, on and around
 // every cell border, where the product and the quotient round apart.
 TEST(CellGrid, CellCoordinateIsTheQuotientFloored) {
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::size_t checked = 0;
-  for (double size : {0.35, 0.1, 1.0 / 3.0, 0.7, 1e-3, 37.5, 0.2 * 1.5, 3e-7}) {
-    CellGrid<2> grid;
-    Column<wash::Vec2D> none;
-    Column<std::uint64_t> noIds;
-    std::vector<Index> order;
-    grid.sort(none, noIds, size, order);
-    std::vector<double> xs = {0.0, -0.0, 1e-320, -1e-320, 1e15, -1e15, 4.5e15 * size};
-    for (std::int64_t k = -3000; k <= 3000; ++k) { // borders, and a scan's p - r, p + r
-      const double border = double(k) * size;
-      for (double x : {border, border + size, border - size}) {
-        double up = x, down = x;
-        for (int n = 0; n < 3;
-             ++n, up = std::nextafter(up, 1e300), down = std::nextafter(down, -1e300))
-          xs.push_back(up), xs.push_back(down);
-      }
-    }
-    for (int k = 0; k < 20000; ++k)
-      xs.push_back(unit(rng) * 1e4 * size);
+  for (double size : cellSizes) {
+    const CellGrid<2> grid = gridOfSize(size);
+    std::vector<double> xs = bordersAndMore(size, rng);
+    xs.insert(xs.end(), {0.0, -0.0, 1e-320, -1e-320, 1e15, -1e15, 4.5e15 * size});
     for (double x : xs) {
       ASSERT_EQ(grid.coordinate(x), static_cast<std::int64_t>(std::floor(x / size)))
           << "x = " << x << ", cell size " << size;
@@ -133,24 +156,10 @@ TEST(CellGrid, CellCoordinateIsTheQuotientFloored) {
 // particle's from one product; they must be those of x - r and x + r divided.
 TEST(CellGrid, NeighbourCellsAreThoseOfTheIntervalsEnds) {
   std::mt19937_64 rng(8);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   std::size_t fast = 0, slow = 0;
-  for (double size : {0.35, 0.1, 1.0 / 3.0, 0.7, 1e-3, 37.5, 0.2 * 1.5, 3e-7}) {
-    CellGrid<2> grid;
-    Column<wash::Vec2D> none;
-    Column<std::uint64_t> noIds;
-    std::vector<Index> order;
-    grid.sort(none, noIds, size, order);
-    std::vector<double> xs;
-    for (std::int64_t k = -3000; k <= 3000; ++k) {
-      double up = double(k) * size, down = up;
-      for (int n = 0; n < 3;
-           ++n, up = std::nextafter(up, 1e300), down = std::nextafter(down, -1e300))
-        xs.push_back(up), xs.push_back(down);
-    }
-    for (int k = 0; k < 20000; ++k)
-      xs.push_back(unit(rng) * 1e4 * size);
-    for (double x : xs) {
+  for (double size : cellSizes) {
+    const CellGrid<2> grid = gridOfSize(size);
+    for (double x : bordersAndMore(size, rng)) {
       std::int64_t first, last;
       if (!grid.neighbourCells(x, size, first, last)) {
         ++slow;
