@@ -7,10 +7,39 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <random>
 #include <vector>
 
 using namespace wash::backend;
+
+namespace {
+
+std::size_t pageOffset(const void *p) { return reinterpret_cast<std::uintptr_t>(p) % 4096; }
+
+} // namespace
+
+// The scan's stores must not share their place in a page with the table
+// loads that follow them (4K aliasing): the buffers start at fixed offsets,
+// however often they grow, and the tables sit at the start of a page.
+TEST(ScanBuffers, KeepClearOfTheCompactionTables) {
+  ScanBuffers<NeighbourRef> buffers;
+  for (std::size_t n : {10, 40, 200, 3000, 50, 70000}) {
+    buffers.reserve(n);
+    EXPECT_EQ(pageOffset(buffers.rows()), 1024u) << n;
+    EXPECT_EQ(pageOffset(buffers.distances()), 2560u) << n;
+    EXPECT_GE(reinterpret_cast<const char *>(buffers.distances()),
+              reinterpret_cast<const char *>(buffers.rows() + n + scanSlack))
+        << "rows and distances overlap for " << n;
+    buffers.rows()[n + scanSlack - 1].index = 1; // both hold n + scanSlack
+    buffers.distances()[n + scanSlack - 1] = 1.0;
+  }
+#if WASH_SCAN_AVX2
+  EXPECT_EQ(pageOffset(&scanCompaction<2>), 0u);
+  EXPECT_EQ(pageOffset(&scanCompaction<3>), 0u);
+  EXPECT_LE(sizeof(scanCompaction<2>.wide) + sizeof(scanCompaction<2>.narrow), 1024u);
+#endif
+}
 
 #if WASH_SCAN_AVX2
 

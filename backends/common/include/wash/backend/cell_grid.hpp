@@ -160,35 +160,40 @@ public:
   /// arithmetic unless x / r lies within a hair of an integer; false then,
   /// and the caller computes both as coordinate() does.
   bool neighbourCells(double x, double r, std::int64_t &first, std::int64_t &last) const {
-    if (r != radius_)
+    std::int64_t whole;
+    if (r != radius_ || !clearOfIntegers(x * inverse_, 2.0, whole))
       return false;
-    const double q = x * inverse_;
-    std::int64_t whole = static_cast<std::int64_t>(q);
-    whole -= q < static_cast<double>(whole);
-    const double above = q - static_cast<double>(whole);
-    const double hair = 1e-12 * (std::fabs(q) + 2.0);
     first = whole - 1;
     last = whole + 1;
-    return above > hair && above < 1.0 - hair;
+    return true;
   }
+
   /// floor(x / radius_), the division rounded as written, then floored (the
   /// reference's cell), mostly without dividing: x * (1 / radius_) is within
   /// 4e-16 relative of that quotient, so the floors agree unless the product
   /// lies within a hair of an integer, and then the division decides. (A
   /// division is the slowest step of setting up a scan.)
   std::int64_t coordinate(double x) const {
-    const double q = x * inverse_;
-    std::int64_t whole = static_cast<std::int64_t>(q); // truncated, then floored
-    whole -= q < static_cast<double>(whole);
-    // NaN or huge for a NaN or infinite x, which then takes the division.
-    const double above = q - static_cast<double>(whole);
-    const double hair = 1e-12 * (std::fabs(q) + 1.0);
-    if (above > hair && above < 1.0 - hair) [[likely]]
+    std::int64_t whole;
+    if (clearOfIntegers(x * inverse_, 1.0, whole)) [[likely]]
       return whole;
     return static_cast<std::int64_t>(std::floor(x / radius_));
   }
 
 private:
+  /// floor(q) into `whole`, and whether q lies farther than
+  /// 1e-12 * (|q| + slack) from every integer; false for a NaN, infinite or
+  /// huge q.
+  static bool clearOfIntegers(double q, double slack, std::int64_t &whole) {
+    if (!(std::fabs(q) < 0x1p62))
+      return false;
+    whole = static_cast<std::int64_t>(q); // truncated, then floored
+    whole -= q < static_cast<double>(whole);
+    const double above = q - static_cast<double>(whole);
+    const double hair = 1e-12 * (std::fabs(q) + slack);
+    return above > hair && above < 1.0 - hair;
+  }
+
   std::size_t linear(const std::array<std::int64_t, D> &c) const {
     std::size_t index = 0;
     for (int a = D - 1; a >= 0; --a)

@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <new>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -37,6 +39,55 @@ template <typename Row> struct NeighbourRefOf {
 };
 using NeighbourRef = NeighbourRefOf<std::size_t>;
 using StoredNeighbourRef = NeighbourRefOf<Index>;
+
+/// The buffers a scan writes, one set per thread: the rows kept and their
+/// (squared) distances. An x86 core makes a load wait for an earlier store
+/// whose address has the same low 12 bits ("4K aliasing"), and every block
+/// of a scan loads from the compaction tables (offsets 0 to 1023 of a page)
+/// right after storing to these buffers: where malloc happened to put them
+/// made the whole seed program anywhere from 0 to 35 % slower, from one run to
+/// the next of the same binary (docs/performance.md). So both live in one
+/// page-aligned block, the rows from offset 1024 of a page and the distances
+/// from offset 2560, clear of the tables for up to 188 neighbours.
+template <typename Ref> class ScanBuffers {
+public:
+  ScanBuffers() = default;
+  ScanBuffers(const ScanBuffers &) = delete;
+  ScanBuffers &operator=(const ScanBuffers &) = delete;
+  ~ScanBuffers() { std::free(block_); }
+
+  /// Room for n entries in each, plus the vector scan's whole last block.
+  void reserve(std::size_t n) {
+    n += scanSlack;
+    if (n <= capacity_)
+      return;
+    const std::size_t capacity = std::max(n, 2 * capacity_);
+    const std::size_t rowsAt = pageOffset(0, 1024);
+    const std::size_t distAt = pageOffset(rowsAt + capacity * sizeof(Ref), 2560);
+    const std::size_t bytes = (distAt + capacity * sizeof(double) + page - 1) / page * page;
+    void *block = std::aligned_alloc(page, bytes);
+    if (!block)
+      throw std::bad_alloc();
+    std::free(block_);
+    block_ = block;
+    rows_ = reinterpret_cast<Ref *>(static_cast<char *>(block) + rowsAt);
+    dist_ = reinterpret_cast<double *>(static_cast<char *>(block) + distAt);
+    capacity_ = capacity;
+  }
+  Ref *rows() const { return rows_; }
+  double *distances() const { return dist_; }
+
+private:
+  static constexpr std::size_t page = 4096;
+  /// The first position from `at` on that lies at `offset` within a page.
+  static std::size_t pageOffset(std::size_t at, std::size_t offset) {
+    return (at + page - offset + page - 1) / page * page + offset - page;
+  }
+  void *block_ = nullptr;
+  Ref *rows_ = nullptr;
+  double *dist_ = nullptr;
+  std::size_t capacity_ = 0;
+};
 
 /// The neighbours of one particle, in canonical order. Built when the kernel
 /// starts for that particle by walking the cell grid's candidate ranges and
@@ -73,7 +124,7 @@ public:
     for (std::size_t k = 0; k < kept; ++k) // ids and rows below 2^32: the order is the id's
       keys[k] = ids[begin_[k].index] << 32 | begin_[k].index;
     std::sort(keys.begin(), keys.begin() + std::ptrdiff_t(kept));
-    Ref *out = threadBuffer().data();
+    Ref *out = threadBuffers().rows();
     for (std::size_t k = 0; k < kept; ++k)
       out[k].index = Index(keys[k] & 0xffffffffu);
   }
@@ -113,10 +164,12 @@ private:
     const double r2 = radius * radius;
     CandidateRanges ranges;
     grid.candidates(centre, radius, ranges);
-    Ref *out = room(threadBuffer(), ranges.total);
+    ScanBuffers<Ref> &buffers = threadBuffers();
+    buffers.reserve(ranges.total);
+    Ref *out = buffers.rows();
     double *dist = nullptr; // squared distances, then distances
     if constexpr (Distances)
-      dist_ = dist = room(threadDistances(), ranges.total);
+      dist_ = dist = buffers.distances();
     std::size_t kept = 0;
     const PosT *p = pos.data();
 #if WASH_SCAN_AVX2
@@ -192,19 +245,9 @@ private:
   }
 #endif
 
-  /// v's data, with room for n candidates (the vector scan writes whole blocks).
-  template <typename T> static T *room(std::vector<T> &v, std::size_t n) {
-    if (v.size() < n + scanSlack)
-      v.resize(n + scanSlack);
-    return v.data();
-  }
-  static std::vector<Ref> &threadBuffer() {
-    thread_local std::vector<Ref> buffer;
-    return buffer;
-  }
-  static std::vector<double> &threadDistances() {
-    thread_local std::vector<double> distances;
-    return distances;
+  static ScanBuffers<Ref> &threadBuffers() {
+    thread_local ScanBuffers<Ref> buffers;
+    return buffers;
   }
   static std::vector<std::uint64_t> &threadKeys() {
     thread_local std::vector<std::uint64_t> keys;

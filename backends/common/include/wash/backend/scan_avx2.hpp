@@ -71,8 +71,10 @@ template <> inline constexpr int laneCandidate<2>[4] = {0, 2, 1, 3};
 
 /// For each 4-bit mask of kept lanes, the 32-bit lanes that move their rows
 /// (64-bit lanes of a register) to the front in candidate order: whole rows
-/// for 64-bit lists, their low halves for 32-bit ones.
-template <int D> struct ScanCompaction {
+/// for 64-bit lists, their low halves for 32-bit ones. Page-aligned, so the
+/// tables take offsets 0 to 1023 of their 4 KiB page, which the scan's
+/// buffers keep clear of (ScanBuffers).
+template <int D> struct alignas(4096) ScanCompaction {
   alignas(32) std::int32_t wide[16][8];
   alignas(32) std::int32_t narrow[16][8];
   constexpr ScanCompaction() : wide{}, narrow{} {

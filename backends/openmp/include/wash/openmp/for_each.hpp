@@ -10,23 +10,23 @@
 
 namespace wash::openmp {
 
+/// Particles per dynamic chunk: 256, or a 64th of a thread's share when that
+/// is more. A thread's chunk reads its neighbours from the rows of cells
+/// around it; with small chunks the threads take turns along the same rows and
+/// each pulls all of them into its own cache. At a million particles in 2D
+/// those rows outgrow the cache, and 8192-particle chunks made the 2-thread
+/// seed 4-6 % faster (docs/performance.md) while 64 chunks a thread still even
+/// out the work.
+inline std::size_t chunkFor(std::size_t n) {
+  return std::max<std::size_t>(256, n / (64 * std::size_t(omp_get_max_threads())));
+}
+
 /// Calls body(i) for every position in `rows` (the real particles), on all
 /// threads; body returns whether what it wrote is finite, and the loop whether
 /// every call did. Each call writes only particle i (the translator checked),
 /// so no atomics are needed, and the result does not depend on the thread
 /// count. Dynamic chunks even out uneven neighbour counts; particles are
 /// cell-sorted, so a chunk is a compact region.
-/// Particles per dynamic chunk: 256, or a 64th of a thread's share when that
-/// is more. A thread's chunk reads its neighbours from the rows of cells
-/// around it; with small chunks the threads take turns along the same rows and
-/// each pulls all of them into its own cache. At a million particles in 2D
-/// those rows outgrow the cache, and 8192-particle chunks made the 2-thread
-/// seed 6 % faster (docs/performance.md) while 64 chunks a thread still even
-/// out the work.
-inline std::size_t chunkFor(std::size_t n) {
-  return std::max<std::size_t>(256, n / (64 * std::size_t(omp_get_max_threads())));
-}
-
 template <typename Body>
 inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
   const std::size_t n = rows.size();
