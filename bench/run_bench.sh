@@ -140,10 +140,11 @@ measure() {
     echo "failed"
     return
   fi
-  local line rss="-"
-  line=$(grep -o '[0-9.]* ns per particle-step' "$work/log" || true)
+  local own rss="-"
+  own=$(grep -o '[0-9.]* ns per particle-step' "$work/log" || true)
+  own=${own%% *}
   (( have_time )) && rss=$(tail -n 1 "$work/rss")
-  echo "$(( t1 - t0 )) $rss ${line%% *}" | awk '{ printf "%s %s %s\n", $1, $2, ($3 == "" ? "-" : $3) }'
+  echo "$(( t1 - t0 )) $rss ${own:--}"
 }
 
 # lower KEY VALUE / higher KEY VALUE: keep the least / greatest value of

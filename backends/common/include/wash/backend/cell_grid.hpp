@@ -125,9 +125,10 @@ public:
     }
     int count = 0;
     std::size_t total = 0;
+    const std::size_t rowCells = std::size_t(to[0] - from[0] + 1);
     const auto addRow = [&](const std::array<std::int64_t, D> &first) {
       const std::size_t start = linear(first);
-      const Index b = cellStart_[start], e = cellStart_[start + std::size_t(to[0] - from[0]) + 1];
+      const Index b = cellStart_[start], e = cellStart_[start + rowCells];
       if (b == e)
         return;
       if (count == CandidateRanges::capacity)

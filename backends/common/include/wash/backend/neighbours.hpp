@@ -9,13 +9,12 @@
 
 #include <wash/backend/cell_grid.hpp>
 #include <wash/backend/scan_avx2.hpp>
+#include <wash/backend/scan_buffers.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
-#include <new>
 #include <stdexcept>
 #include <type_traits>
 #include <vector>
@@ -39,55 +38,6 @@ template <typename Row> struct NeighbourRefOf {
 };
 using NeighbourRef = NeighbourRefOf<std::size_t>;
 using StoredNeighbourRef = NeighbourRefOf<Index>;
-
-/// The buffers a scan writes, one set per thread: the rows kept and their
-/// (squared) distances. An x86 core makes a load wait for an earlier store
-/// whose address has the same low 12 bits ("4K aliasing"), and every block
-/// of a scan loads from the compaction tables (offsets 0 to 1023 of a page)
-/// right after storing to these buffers: where malloc happened to put them
-/// made the whole seed program anywhere from 0 to 35 % slower, from one run to
-/// the next of the same binary (docs/performance.md). So both live in one
-/// page-aligned block, the rows from offset 1024 of a page and the distances
-/// from offset 2560, clear of the tables for up to 188 neighbours.
-template <typename Ref> class ScanBuffers {
-public:
-  ScanBuffers() = default;
-  ScanBuffers(const ScanBuffers &) = delete;
-  ScanBuffers &operator=(const ScanBuffers &) = delete;
-  ~ScanBuffers() { std::free(block_); }
-
-  /// Room for n entries in each, plus the vector scan's whole last block.
-  void reserve(std::size_t n) {
-    n += scanSlack;
-    if (n <= capacity_)
-      return;
-    const std::size_t capacity = std::max(n, 2 * capacity_);
-    const std::size_t rowsAt = pageOffset(0, 1024);
-    const std::size_t distAt = pageOffset(rowsAt + capacity * sizeof(Ref), 2560);
-    const std::size_t bytes = (distAt + capacity * sizeof(double) + page - 1) / page * page;
-    void *block = std::aligned_alloc(page, bytes);
-    if (!block)
-      throw std::bad_alloc();
-    std::free(block_);
-    block_ = block;
-    rows_ = reinterpret_cast<Ref *>(static_cast<char *>(block) + rowsAt);
-    dist_ = reinterpret_cast<double *>(static_cast<char *>(block) + distAt);
-    capacity_ = capacity;
-  }
-  Ref *rows() const { return rows_; }
-  double *distances() const { return dist_; }
-
-private:
-  static constexpr std::size_t page = 4096;
-  /// The first position from `at` on that lies at `offset` within a page.
-  static std::size_t pageOffset(std::size_t at, std::size_t offset) {
-    return (at + page - offset + page - 1) / page * page + offset - page;
-  }
-  void *block_ = nullptr;
-  Ref *rows_ = nullptr;
-  double *dist_ = nullptr;
-  std::size_t capacity_ = 0;
-};
 
 /// The neighbours of one particle, in canonical order. Built when the kernel
 /// starts for that particle by walking the cell grid's candidate ranges and

@@ -13,6 +13,7 @@
 
 #include <wash/backend/cell_grid.hpp>
 #include <wash/backend/columns.hpp>
+#include <wash/backend/scan_buffers.hpp>
 #include <wash/vec.hpp>
 
 #include <cstddef>
@@ -28,10 +29,6 @@
 #endif
 
 namespace wash::backend {
-
-/// Entries a scan may write past the last neighbour kept: its buffer needs
-/// room for the candidates plus this many.
-inline constexpr std::size_t scanSlack = 4;
 
 /// The squared distance every path of the neighbour test computes, in double:
 /// (dx*dx + dy*dy) [+ dz*dz]; the reference starts from 0 + dx*dx, the same
@@ -72,8 +69,8 @@ template <> inline constexpr int laneCandidate<2>[4] = {0, 2, 1, 3};
 /// For each 4-bit mask of kept lanes, the 32-bit lanes that move their rows
 /// (64-bit lanes of a register) to the front in candidate order: whole rows
 /// for 64-bit lists, their low halves for 32-bit ones. Page-aligned, so the
-/// tables take offsets 0 to 1023 of their 4 KiB page, which the scan's
-/// buffers keep clear of (ScanBuffers).
+/// tables take the page offsets below scanTableBytes, which the scan's
+/// buffers keep clear of (scan_buffers.hpp).
 template <int D> struct alignas(4096) ScanCompaction {
   alignas(32) std::int32_t wide[16][8];
   alignas(32) std::int32_t narrow[16][8];
@@ -95,6 +92,8 @@ template <int D> struct alignas(4096) ScanCompaction {
   }
 };
 template <int D> inline constexpr ScanCompaction<D> scanCompaction{};
+static_assert(sizeof(ScanCompaction<2>::wide) + sizeof(ScanCompaction<2>::narrow) <= scanTableBytes,
+              "the compaction tables fit the page offsets the scan buffers leave them");
 
 /// Stores the rows of `rows` (four 64-bit lanes) that `mask` keeps at `to`, in
 /// candidate order, as Ref; writes a whole block of four Refs.
