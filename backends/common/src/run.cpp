@@ -15,16 +15,18 @@ detail::RunOptions &programOptions() {
   return o;
 }
 
-Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writes,
-         bool translatedForSupport)
-    : backend_(backend), dimensions_(dimensions), useFloat_(translatedForFloat), writes_(writes) {
+Run::Run(const Translation &translated, bool writes)
+    : backend_(translated.backend), dimensions_(translated.dimensions),
+      useFloat_(translated.floatStorage), writes_(writes) {
+  const bool translatedForFloat = translated.floatStorage;
+  const bool translatedForSupport = translated.smoothingLengthSearch;
+  const int dimensions = translated.dimensions;
   const Settings &s = settings();
   const detail::RunOptions &o = programOptions();
   if (s.useFloat && *s.useFloat != translatedForFloat)
     throw detail::RunError(std::string("this program was translated for ") +
                            (translatedForFloat ? "float" : "double") +
-                           " precision, but main asked for " +
-                           (*s.useFloat ? "float" : "double"));
+                           " precision, but main asked for " + (*s.useFloat ? "float" : "double"));
   if (std::string bad = s.search.check(); !bad.empty())
     throw detail::RunError(bad);
   if (s.search.perParticle() != translatedForSupport)
@@ -40,8 +42,8 @@ Run::Run(const char *backend, int dimensions, bool translatedForFloat, bool writ
   if (std::string bad = detail::checkBox(s.box, dimensions, radius_); !bad.empty())
     throw detail::RunError(bad);
   if (writes_)
-    output_ = std::make_unique<detail::RunOutput>(
-        o, s.outputFileName.empty() ? s.simulationName : s.outputFileName);
+    output_ = std::make_unique<detail::RunOutput>(o, s.outputFileName.empty() ? s.simulationName
+                                                                              : s.outputFileName);
 }
 
 bool Run::frameDue(std::uint64_t step) const {

@@ -6,7 +6,7 @@
 // RUN: FileCheck %s --check-prefix=HEADER --input-file %t/mpi-driver.wash.hpp
 // HEADER: #include <wash/mpi/for_each.hpp>
 // HEADER: #include <wash/mpi/halo.hpp>
-// CHECK: wash::backend::Run run("mpi", 2, false, wash::mpi::rank() == 0);
+// CHECK: wash::backend::Run run(wash::backend::Translation{.backend = "mpi", .dimensions = 2, .floatStorage = false, .smoothingLengthSearch = false}, /*writes=*/wash::mpi::rank() == 0);
 // CHECK: wash::mpi::keepInitialShare(P, domain, halo);
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(), [](auto send) { send(P.id); send(P.pos); send(P.mass); });

@@ -5,7 +5,7 @@
 // RUN: grep -vE '^// [A-Z-]+:' %t/openmp-driver.openmp.cpp | FileCheck %s --implicit-check-not='{{atom}}ic' --implicit-check-not='{{crit}}ical'
 // RUN: FileCheck %s --check-prefix=CMAKE --input-file %t/CMakeLists.txt
 // HEADER: #include <wash/openmp/for_each.hpp>
-// CHECK: wash::backend::Run run("openmp", 2, false);
+// CHECK: wash::backend::Run run(wash::backend::Translation{.backend = "openmp", .dimensions = 2, .floatStorage = false, .smoothingLengthSearch = false}, /*writes=*/true);
 // CHECK: wash::openmp::forEachParticleChecked(images.owned, [](Index i) {
 // CHECK: ::Count(self, NeighbourList(grid, P.pos, i));
 // CHECK: wash::openmp::forEachParticleChecked(images.owned, [](Index i) {

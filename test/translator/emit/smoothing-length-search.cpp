@@ -8,7 +8,7 @@
 // RUN: grep -vE '^// [A-Z-]+:' %t/mpi/smoothing-length-search.mpi.cpp | FileCheck %s --check-prefix=MPI
 // CHECK: wash::backend::NeighbourTable<3, Stored> table;
 // CHECK: table.build(grid, P.pos, P.id, P.smoothing_length, at, images.owned);
-// CHECK: wash::backend::Run run("openmp", 3, false, true, true);
+// CHECK: wash::backend::Run run(wash::backend::Translation{.backend = "openmp", .dimensions = 3, .floatStorage = false, .smoothingLengthSearch = true}, /*writes=*/true);
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, images.owned, run.box(), 3, step, "Density"), run.box());
 // CHECK: ::Density(self, table.list(i));

@@ -26,6 +26,13 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
   OS << "  return created;\n}\n\n";
 }
 
+std::string translationText(const CodePlan &Plan) {
+  return std::string("wash::backend::Translation{.backend = \"") + backendName(Plan.Target) +
+         "\", .dimensions = " + std::to_string(Plan.Dim) +
+         ", .floatStorage = " + (Plan.Float ? "true" : "false") +
+         ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") + "}";
+}
+
 void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
   for (const Field *F : Plan.Output) {
     if (!F->Live)
@@ -49,8 +56,7 @@ std::vector<std::string> checkedFields(const Kernel &K, const CodePlan &Plan) {
 } // namespace
 
 void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
-                      const std::string &Step, const std::string &Rows,
-                      const std::string &Indent) {
+                      const std::string &Step, const std::string &Rows, const std::string &Indent) {
   for (const std::string &F : checkedFields(K, Plan))
     OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, " << Rows << ", " << Step
        << ", \"" << K.Function << "\", \"" << F << "\");\n";
@@ -174,7 +180,8 @@ void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan) {
   for (const std::string &F : Plan.Snapshotted) {
     const std::string &Col = Plan.Member.at(F);
     if (K.Hazards.count(F))
-      OS << "    " << Col << "_snapshot = P." << Col << "; // written here, read through neighbours\n"
+      OS << "    " << Col << "_snapshot = P." << Col
+         << "; // written here, read through neighbours\n"
          << "    " << Col << "_neighbour = " << Col << "_snapshot.data();\n";
     else
       OS << "    " << Col << "_neighbour = P." << Col << ".data();\n";

@@ -50,8 +50,7 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "std::vector<Index> order;\n"
      << "wash::mpi::Domain<" << Plan.Dim << "> domain;\n"
      << "wash::mpi::HaloPlan halo;\n"
-     << neighbourTableDeclaration(Plan)
-     << "\n"
+     << neighbourTableDeclaration(Plan) << "\n"
      << "/// A neighbour search: particles to their owners, images across periodic\n"
      << "/// faces, a new halo carrying the columns `fields` visits, then everything\n"
      << "/// local sorted by (cell, id).\n"
@@ -64,8 +63,7 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
      << "  grid.sort(P.pos, P.id, at.cellSize, order);\n"
      << "  P.forEachColumn([](auto &column) { wash::backend::permute(column, order); });\n"
      << "  halo.permuted(order);\n"
-     << neighbourTableBuild(Plan, "halo.owned")
-     << "}\n\n"
+     << neighbourTableBuild(Plan, "halo.owned") << "}\n\n"
      << "/// This rank's particles, gathered on rank 0 (collective).\n"
      << "wash::detail::Frame frame() {\n"
      << "  wash::backend::FrameBuilder f(" << Plan.Dim << ", P.id, &halo.owned);\n";
@@ -75,8 +73,8 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
   emitCreateParticle(OS, Plan);
 
   OS << "void start() {\n"
-     << "  wash::backend::Run run(\"mpi\", " << Plan.Dim << ", " << (Plan.Float ? "true" : "false")
-     << ", wash::mpi::rank() == 0" << (Plan.SmoothingSearch ? ", true" : "") << ");\n"
+     << "  wash::backend::Run run(" << translationText(Plan)
+     << ", /*writes=*/wash::mpi::rank() == 0);\n"
      << "  // Init kernels run on every rank (they must be deterministic); each rank\n"
      << "  // then keeps its share.\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
@@ -100,8 +98,10 @@ std::string emitMpiDriver(const Model &M, const CodePlan &Plan,
   OS << "  run.finish(frame());\n"
      << "  const std::uint64_t steps = run.steps() ? run.steps() : 1;\n"
      << "  const std::uint64_t haloBytes = wash::mpi::allreduceSum(wash::mpi::traffic().halo);\n"
-     << "  const std::uint64_t moveBytes = wash::mpi::allreduceSum(wash::mpi::traffic().migration);\n"
-     << "  run.report(\"wash mpi: \" + std::to_string(wash::mpi::ranks()) + \" ranks; halo exchange \" +\n"
+     << "  const std::uint64_t moveBytes = "
+        "wash::mpi::allreduceSum(wash::mpi::traffic().migration);\n"
+     << "  run.report(\"wash mpi: \" + std::to_string(wash::mpi::ranks()) + \" ranks; halo "
+        "exchange \" +\n"
      << "             std::to_string(haloBytes / steps) + \" bytes/step, particle migration \" +\n"
      << "             std::to_string(moveBytes / steps) + \" bytes/step (all ranks)\");\n"
      << "}\n} // namespace wash_gen\n";

@@ -18,7 +18,9 @@
 namespace wash::tr {
 namespace {
 
-std::string loopNamespace(Backend B) { return B == Backend::OpenMP ? "wash::openmp" : "wash::serial"; }
+std::string loopNamespace(Backend B) {
+  return B == Backend::OpenMP ? "wash::openmp" : "wash::serial";
+}
 
 bool isForce(const Kernel &K) { return K.Kind == KernelKind::Force; }
 
@@ -90,10 +92,12 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
              : ">;\n\n")
      << "struct Particles {\n";
   for (const Field *F : Plan.Stored)
-    OS << "  wash::backend::Column<" << (F->Name == "id" ? "std::uint64_t"
-                                          : F->Kind == ForceKind::Vector ? "Stored" : "Real")
-       << "> " << Plan.Member.at(F->Name) << ";"
-       << (F->OutputOnly ? " // output only" : "") << "\n";
+    OS << "  wash::backend::Column<"
+       << (F->Name == "id"                ? "std::uint64_t"
+           : F->Kind == ForceKind::Vector ? "Stored"
+                                          : "Real")
+       << "> " << Plan.Member.at(F->Name) << ";" << (F->OutputOnly ? " // output only" : "")
+       << "\n";
   OS << "\n  std::size_t size() const { return id.size(); }\n"
      << "  /// Calls f(column) for every column.\n"
      << "  template <typename F> void forEachColumn(F f) {\n";
@@ -122,7 +126,8 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
     std::string Api = Fd.Kind == ForceKind::Vector ? "wash::ParticleVec" : "double";
     OS << "\n// '" << F << "' is written by a force kernel on its particle and read through\n"
        << "// neighbours: neighbours read the column " << Col
-       << "_neighbour points to, a snapshot\n// during such a kernel and the live column otherwise.\n"
+       << "_neighbour points to, a snapshot\n// during such a kernel and the live column "
+          "otherwise.\n"
        << "inline wash::backend::Column<" << (Fd.Kind == ForceKind::Vector ? "Stored" : "Real")
        << "> " << Col << "_snapshot;\n"
        << "inline const " << (Fd.Kind == ForceKind::Vector ? "Stored" : "Real") << " *" << Col
@@ -167,8 +172,7 @@ std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
   emitCreateParticle(OS, Plan);
 
   OS << "void start() {\n"
-     << "  wash::backend::Run run(\"" << backendName(Plan.Target) << "\", " << Plan.Dim << ", "
-     << (Plan.Float ? "true" : "false") << (Plan.SmoothingSearch ? ", true, true" : "") << ");\n";
+     << "  wash::backend::Run run(" << translationText(Plan) << ", /*writes=*/true);\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
       OS << "  " << Callees[K] << "(); // init kernel\n"

@@ -33,7 +33,7 @@ struct Settings {
   std::string outputFileName;
   std::optional<std::uint64_t> maxIterations;
   detail::Box box;
-  int dimensions = 0; ///< set by the generated program before main runs
+  int dimensions = 0;         ///< set by the generated program before main runs
   bool stopRequested = false; ///< by wash::stop() in a void kernel
 };
 Settings &settings();
@@ -51,14 +51,21 @@ template <typename T, int D> bool finite(const Vec<T, D> &v) {
   return all;
 }
 
+/// What a generated program was translated for: the run checks main's
+/// settings against it. Generated code names every member.
+struct Translation {
+  const char *backend = "serial";
+  int dimensions = 2;
+  bool floatStorage = false;          ///< set_precision("float")
+  bool smoothingLengthSearch = false; ///< set_smoothing_length_support
+};
+
 class Run {
 public:
-  /// Checks the settings against what the program was translated for (its
-  /// precision and whether it searches by smoothing length). Only a
+  /// Checks the settings against what the program was translated for. Only a
   /// run that `writes` (rank 0 of an MPI job) prints and writes files; every
   /// rank still builds the frames, which may be collective.
-  Run(const char *backend, int dimensions, bool translatedForFloat, bool writes = true,
-      bool translatedForSupport = false);
+  Run(const Translation &translated, bool writes);
   ~Run();
 
   std::uint64_t steps() const { return steps_; }

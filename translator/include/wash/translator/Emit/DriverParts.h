@@ -14,6 +14,10 @@ namespace wash::tr {
 /// `create_particle`: appends one particle to every column.
 void emitCreateParticle(std::ostream &OS, const CodePlan &Plan);
 
+/// `wash::backend::Translation{...}`: what the program was translated for,
+/// every member named.
+std::string translationText(const CodePlan &Plan);
+
 /// The FrameBuilder calls of `frame()`, in output order (`f` is the builder).
 void emitFrameColumns(std::ostream &OS, const CodePlan &Plan);
 
