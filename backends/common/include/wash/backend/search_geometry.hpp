@@ -29,6 +29,9 @@ struct SearchGeometry {
 
   /// The search radius of a particle with smoothing length h.
   double radiusOf(double h) const { return detail::supportRadius(support, h); }
+  /// The cell size of a domain decomposition whose halos reach as far as any
+  /// later search needs: this search's reach (1 if every radius is 0).
+  double domainCellSize() const { return reach > 0.0 ? reach : 1.0; }
 };
 
 inline SearchGeometry fixedGeometry(double radius) { return {radius, radius, 0.0}; }

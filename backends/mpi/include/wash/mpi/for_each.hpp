@@ -32,7 +32,7 @@ private:
 template <typename Body>
 inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
   BusyClock clock;
-  wash::openmp::forEachParticle(rows, body);
+  wash::openmp::Loop::forEachParticle(rows, body);
 }
 
 /// The same loop for a body that returns whether what it wrote is finite:
@@ -40,7 +40,7 @@ inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) 
 template <typename Body>
 inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
   BusyClock clock;
-  return wash::openmp::forEachParticleChecked(rows, body);
+  return wash::openmp::Loop::forEachParticleChecked(rows, body);
 }
 
 } // namespace wash::mpi

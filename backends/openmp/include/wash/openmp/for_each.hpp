@@ -21,28 +21,33 @@ inline std::size_t chunkFor(std::size_t n) {
   return std::max<std::size_t>(256, n / (64 * std::size_t(omp_get_max_threads())));
 }
 
-/// Calls body(i) for every position in `rows` (the real particles), on all
-/// threads; body returns whether what it wrote is finite, and the loop whether
-/// every call did. Each call writes only particle i (the translator checked),
-/// so no atomics are needed, and the result does not depend on the thread
-/// count. Dynamic chunks even out uneven neighbour counts; particles are
-/// cell-sorted, so a chunk is a compact region.
-template <typename Body>
-inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
-  const std::size_t n = rows.size();
-  bool all = true;
-#pragma omp parallel for schedule(dynamic, chunkFor(n)) reduction(&& : all)
-  for (std::size_t k = 0; k < n; ++k) {
-    const bool finite = body(rows[k]);
-    all = all && finite;
-  }
-  return all;
-}
+/// The particle loop of the OpenMP backend (backend.hpp makes it a backend type).
+struct Loop {
+  static constexpr const char *name = "openmp";
 
-/// The same loop for a body with nothing to report.
-template <typename Body>
-inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  forEachParticleChecked(rows, backend::reportingNothing(body));
-}
+  /// Calls body(i) for every position in `rows` (the real particles), on all
+  /// threads; body returns whether what it wrote is finite, and the loop whether
+  /// every call did. Each call writes only particle i (the translator checked),
+  /// so no atomics are needed, and the result does not depend on the thread
+  /// count. Dynamic chunks even out uneven neighbour counts; particles are
+  /// cell-sorted, so a chunk is a compact region.
+  template <typename Body>
+  static bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
+    const std::size_t n = rows.size();
+    bool all = true;
+#pragma omp parallel for schedule(dynamic, chunkFor(n)) reduction(&& : all)
+    for (std::size_t k = 0; k < n; ++k) {
+      const bool finite = body(rows[k]);
+      all = all && finite;
+    }
+    return all;
+  }
+
+  /// The same loop for a body with nothing to report.
+  template <typename Body>
+  static void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+    forEachParticleChecked(rows, backend::reportingNothing(body));
+  }
+};
 
 } // namespace wash::openmp

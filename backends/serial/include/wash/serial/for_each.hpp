@@ -7,21 +7,26 @@
 
 namespace wash::serial {
 
-/// Calls body(i) for every position in `rows` (the real particles), in order;
-/// body returns whether what it wrote is finite, and the loop whether every
-/// call did.
-template <typename Body>
-inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
-  bool all = true;
-  for (backend::Index i : rows)
-    all &= body(i);
-  return all;
-}
+/// The particle loop of the serial backend (backend.hpp makes it a backend type).
+struct Loop {
+  static constexpr const char *name = "serial";
 
-/// The same loop for a body with nothing to report.
-template <typename Body>
-inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  forEachParticleChecked(rows, backend::reportingNothing(body));
-}
+  /// Calls body(i) for every position in `rows` (the real particles), in order;
+  /// body returns whether what it wrote is finite, and the loop whether every
+  /// call did.
+  template <typename Body>
+  static bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
+    bool all = true;
+    for (backend::Index i : rows)
+      all &= body(i);
+    return all;
+  }
+
+  /// The same loop for a body with nothing to report.
+  template <typename Body>
+  static void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+    forEachParticleChecked(rows, backend::reportingNothing(body));
+  }
+};
 
 } // namespace wash::serial

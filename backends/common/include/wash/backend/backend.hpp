@@ -1,0 +1,85 @@
+//===- wash/backend/backend.hpp - what every backend type provides -*- C++ -*-===//
+//
+// A backend is one C++ type, `wash::<name>::Backend<D>`, and the translator
+// emits one driver against it (docs/architecture.md, "Adding a backend"). The
+// driver owns the columns (the generated `Particles P`); the backend owns
+// which rows are this process's real particles, the cell grid and whatever it
+// keeps across a neighbour search (periodic images, MPI halos), and decides
+// how a particle loop runs. ParticleBackend states that interface, so that a
+// backend missing a piece fails here, in its unit test, not in generated code.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/cell_grid.hpp>
+#include <wash/backend/columns.hpp>
+#include <wash/backend/run.hpp>
+#include <wash/backend/search_geometry.hpp>
+#include <wash/detail/box.hpp>
+#include <wash/detail/frame.hpp>
+#include <wash/detail/reduction.hpp>
+#include <wash/vec.hpp>
+
+#include <concepts>
+#include <cstdint>
+#include <vector>
+
+namespace wash::backend {
+
+/// The smallest column set a backend works on: what every generated
+/// `Particles` has (id and pos), visited by forEachColumn.
+template <int D> struct MinimalParticles {
+  Column<std::uint64_t> id;
+  Column<Vec<double, D>> pos;
+  std::size_t size() const { return id.size(); }
+  template <typename F> void forEachColumn(F f) {
+    f(id);
+    f(pos);
+  }
+};
+
+/// A visitor of the columns a search or a refresh must carry to the copies
+/// neighbours read (images, halo copies): calls its argument on each.
+struct NoColumns {
+  template <typename F> void operator()(F) const {}
+};
+
+template <typename B, int D = B::dimensions>
+concept ParticleBackend =
+    requires(B b, const B cb, MinimalParticles<D> &P, const SearchGeometry &at,
+             const detail::Box &box, const std::vector<double> &values, detail::Frame frame,
+             const Run &run, std::uint64_t (*cellSize)()) {
+      { B::name } -> std::convertible_to<const char *>;
+      /// Whether this process prints and writes files (rank 0 of an MPI job).
+      { cb.writes() } -> std::same_as<bool>;
+      /// The rows of this process's real particles, ascending.
+      { cb.owned() } -> std::same_as<const std::vector<Index> &>;
+      /// The cell grid of the current search (what neighbour lists walk).
+      { cb.grid() } -> std::same_as<const CellGrid<D> &>;
+      /// After the init kernels: keeps this process's share of the particles
+      /// and returns how many there are in all. The callable gives the cell
+      /// size of a domain decomposition; only a distributed backend calls it.
+      {
+        b.distribute(P, [] { return 1.0; })
+      } -> std::same_as<std::uint64_t>;
+      /// A new neighbour search: images, halos, the cell sort of every column.
+      b.search(P, at, box, NoColumns{});
+      /// Brings the copies neighbours read up to date for the columns visited.
+      b.refresh(NoColumns{});
+      /// Calls body(row) for every real particle; the checked form's body
+      /// returns whether what it wrote is finite, and so does the loop.
+      cb.forEachParticle([](Index) {});
+      {
+        cb.forEachParticleChecked([](Index) { return true; })
+      } -> std::same_as<bool>;
+      /// A reduction of values[row] over every real particle, in id order.
+      { cb.reduce(P.id, values, detail::ReduceOp::Sum) } -> std::same_as<double>;
+      /// Combines this process's largest search radius with the others'.
+      { B::combineMax(1.0) } -> std::same_as<double>;
+      /// The frame of every particle, for the writing process.
+      { cb.gather(frame) } -> std::same_as<detail::Frame>;
+      /// The backend's own lines of the end-of-run summary.
+      cb.report(run);
+    };
+
+} // namespace wash::backend

@@ -1,0 +1,79 @@
+//===- wash/backend/shared_memory.hpp - one process holds every particle -*- C++ -*-===//
+//
+// The serial and OpenMP backends: every particle is in this process, periodic
+// images are local copies (periodic.hpp), and the particle loop is the only
+// difference between them (`Loop`, from wash/serial or wash/openmp).
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/cell_grid.hpp>
+#include <wash/backend/columns.hpp>
+#include <wash/backend/periodic.hpp>
+#include <wash/backend/reduce.hpp>
+#include <wash/backend/run.hpp>
+#include <wash/backend/search_geometry.hpp>
+#include <wash/detail/frame.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace wash::backend {
+
+template <int D, typename Loop> class SharedMemoryBackend {
+public:
+  static constexpr int dimensions = D;
+  static constexpr const char *name = Loop::name;
+
+  bool writes() const { return true; }
+  const std::vector<Index> &owned() const { return images_.owned; }
+  const CellGrid<D> &grid() const { return grid_; }
+
+  /// Every particle the init kernels created is real and stays here.
+  template <typename Particles, typename CellSize>
+  std::uint64_t distribute(Particles &P, CellSize) {
+    images_.ownAll(P.size());
+    return P.size();
+  }
+
+  /// Images across periodic faces, then every particle sorted by (cell, id)
+  /// (docs/semantics.md). Images are copies of every column, so the visited
+  /// columns need no transfer. Columns the generated program marks as
+  /// rewritten before they are read (forEachReorderedColumn) keep their order.
+  template <typename Particles, typename Fields>
+  void search(Particles &P, const SearchGeometry &at, const detail::Box &box, Fields) {
+    dropImages(P, images_);
+    addImages<D>(P, images_.owned, box, at.reach, images_);
+    grid_.sort(P.pos, P.id, at.cellSize, order_);
+    auto reorder = [this](auto &column) { permute(column, order_); };
+    if constexpr (requires { P.forEachReorderedColumn(reorder); })
+      P.forEachReorderedColumn(reorder);
+    else
+      P.forEachColumn(reorder);
+    images_.permuted(order_);
+  }
+
+  template <typename Fields> void refresh(Fields fields) { refreshImages(images_, fields); }
+
+  template <typename Body> void forEachParticle(Body body) const {
+    Loop::forEachParticle(images_.owned, body);
+  }
+  template <typename Body> bool forEachParticleChecked(Body body) const {
+    return Loop::forEachParticleChecked(images_.owned, body);
+  }
+
+  double reduce(const Column<std::uint64_t> &ids, const std::vector<double> &values,
+                detail::ReduceOp op) const {
+    return reduceById(ids, values, images_.owned, op);
+  }
+  static double combineMax(double v) { return v; }
+  detail::Frame gather(detail::Frame local) const { return local; }
+  void report(const Run &) const {}
+
+private:
+  CellGrid<D> grid_;
+  std::vector<Index> order_;
+  Images images_; // real particles, and periodic images
+};
+
+} // namespace wash::backend

@@ -1,0 +1,90 @@
+//===- wash/mpi/backend.hpp - the MPI backend type ----------------*- C++ -*-===//
+//
+// Each rank owns the particles of its cells (domain.hpp) and, while a search
+// lasts, halo copies of other ranks' particles within reach (halo.hpp); the
+// particle loop is the OpenMP one, timed for the load balance.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/backend/cell_grid.hpp>
+#include <wash/backend/run.hpp>
+#include <wash/backend/search_geometry.hpp>
+#include <wash/mpi/comm.hpp>
+#include <wash/mpi/domain.hpp>
+#include <wash/mpi/for_each.hpp>
+#include <wash/mpi/halo.hpp>
+
+#include <string>
+
+namespace wash::mpi {
+
+template <int D> class Backend {
+public:
+  static constexpr int dimensions = D;
+  static constexpr const char *name = "mpi";
+
+  bool writes() const { return rank() == 0; }
+  const std::vector<Index> &owned() const { return halo_.owned; }
+  const backend::CellGrid<D> &grid() const { return grid_; }
+
+  /// The init kernels ran on every rank (they must be deterministic): each
+  /// rank keeps its share, on a domain whose cells are cellSize() wide.
+  template <typename Particles, typename CellSize>
+  std::uint64_t distribute(Particles &P, CellSize cellSize) {
+    halo_.ownAll(P.size());
+    domain_.setCellSize(cellSize());
+    keepInitialShare(P, domain_, halo_);
+    return allreduceSum(std::uint64_t(halo_.owned.size()));
+  }
+
+  /// Particles to their owners, images across periodic faces, a new halo
+  /// carrying the columns `fields` visits (id and pos among them), then
+  /// everything local sorted by (cell, id). Migration moves every column.
+  template <typename Particles, typename Fields>
+  void search(Particles &P, const backend::SearchGeometry &at, const ::wash::detail::Box &box,
+              Fields fields) {
+    redistribute(P, domain_, halo_);
+    backend::addImages<D>(P, halo_.owned, box, at.reach, halo_);
+    buildHalo(P, domain_, at.reach, halo_, fields);
+    grid_.sort(P.pos, P.id, at.cellSize, order_);
+    P.forEachColumn([this](auto &column) { backend::permute(column, order_); });
+    halo_.permuted(order_);
+  }
+
+  /// Local images, then the halo copies of the columns `fields` visits.
+  template <typename Fields> void refresh(Fields fields) { exchange(halo_, fields); }
+
+  template <typename Body> void forEachParticle(Body body) const {
+    mpi::forEachParticle(halo_.owned, body);
+  }
+  template <typename Body> bool forEachParticleChecked(Body body) const {
+    return mpi::forEachParticleChecked(halo_.owned, body);
+  }
+
+  double reduce(const backend::Column<std::uint64_t> &ids, const std::vector<double> &values,
+                ::wash::detail::ReduceOp op) const {
+    return reduceById(ids, values, halo_.owned, op);
+  }
+  static double combineMax(double v) { return allreduceMax(v); }
+  /// Collective: every rank's particles, on rank 0.
+  ::wash::detail::Frame gather(::wash::detail::Frame local) const { return gatherFrame(local); }
+
+  /// Collective: the traffic of the run, per step, over all ranks.
+  void report(const backend::Run &run) const {
+    const std::uint64_t steps = run.steps() ? run.steps() : 1;
+    const std::uint64_t haloBytes = allreduceSum(traffic().halo);
+    const std::uint64_t moveBytes = allreduceSum(traffic().migration);
+    run.report("wash mpi: " + std::to_string(ranks()) + " ranks; halo exchange " +
+               std::to_string(haloBytes / steps) + " bytes/step, particle migration " +
+               std::to_string(moveBytes / steps) + " bytes/step (all ranks)");
+  }
+
+private:
+  backend::CellGrid<D> grid_;
+  std::vector<Index> order_;
+  Domain<D> domain_;
+  HaloPlan halo_;
+};
+
+} // namespace wash::mpi

@@ -1,0 +1,44 @@
+// The MPI backend type (wash/mpi/backend.hpp) under mpirun: it has the
+// interface the generated driver calls, and it distributes, searches and
+// reduces over every rank's share.
+#include <wash/backend/backend.hpp>
+#include <wash/backend/frame_builder.hpp>
+#include <wash/mpi/backend.hpp>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+static_assert(wash::backend::ParticleBackend<wash::mpi::Backend<2>>);
+static_assert(wash::backend::ParticleBackend<wash::mpi::Backend<3>>);
+
+using wash::backend::Index;
+
+TEST(MpiBackend, EveryRankKeepsAShareAndReducesOverAll) {
+  wash::mpi::Backend<2> backend;
+  wash::backend::MinimalParticles<2> P; // every rank creates the same 40 particles
+  for (std::size_t k = 0; k < 40; ++k) {
+    P.id.push_back(k);
+    P.pos.push_back(wash::Vec<double, 2>{double(k), 0.0});
+  }
+  EXPECT_EQ(backend.distribute(P, [] { return 1.0; }), 40u);
+  EXPECT_EQ(wash::mpi::allreduceSum(std::uint64_t(backend.owned().size())), 40u);
+  EXPECT_EQ(backend.writes(), wash::mpi::rank() == 0);
+
+  wash::detail::Box box;
+  backend.search(P, wash::backend::fixedGeometry(1.5), box, [&](auto send) {
+    send(P.id);
+    send(P.pos);
+  });
+  std::vector<double> values(P.size(), 0.0);
+  backend.forEachParticle([&](Index i) { values[i] = double(P.id[i]); });
+  EXPECT_EQ(backend.reduce(P.id, values, wash::detail::ReduceOp::Sum), 780.0); // 0 + ... + 39
+  EXPECT_EQ(wash::mpi::Backend<2>::combineMax(double(wash::mpi::rank())),
+            double(wash::mpi::ranks() - 1));
+  // Rank 0 gets every rank's particles; the others an empty frame.
+  wash::backend::FrameBuilder f(2, P.id, &backend.owned());
+  const wash::detail::Frame all = backend.gather(f.take());
+  EXPECT_EQ(all.size(), wash::mpi::rank() == 0 ? 40u : 0u);
+}
+
+} // namespace
