@@ -21,5 +21,6 @@ file(WRITE "${PROJECT_BINARY_DIR}/washConfig.cmake"
   "include(CMakeFindDependencyMacro)\n"
   "find_dependency(OpenMP COMPONENTS CXX)\n"
   "find_dependency(MPI COMPONENTS CXX)\n"
+  "set(WASH_BACKENDS ${WASH_BACKENDS})\n"
   "include(\"\${CMAKE_CURRENT_LIST_DIR}/washTargets.cmake\")\n"
   "include(\"${PROJECT_SOURCE_DIR}/cmake/WashSimulation.cmake\")\n")

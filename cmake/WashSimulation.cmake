@@ -17,7 +17,7 @@ function(wash_add_reference target)
   target_link_libraries(${target} PRIVATE wash::reference${ARG_DIM}d)
 endfunction()
 
-# wash_add_simulation(<target> SOURCE <file.cpp> BACKEND serial|openmp|mpi)
+# wash_add_simulation(<target> SOURCE <file.cpp> BACKEND <one of WASH_BACKENDS>)
 #
 # Translates a simulation source with the wash translator as a build step and
 # builds the generated program against that backend's runtime. The translation
@@ -27,9 +27,13 @@ function(wash_add_simulation target)
   if(NOT ARG_SOURCE OR NOT ARG_BACKEND)
     message(FATAL_ERROR "wash_add_simulation(${target}): SOURCE and BACKEND are required")
   endif()
-  if(NOT ARG_BACKEND MATCHES "^(serial|openmp|mpi)$")
+  if(NOT ARG_BACKEND IN_LIST WASH_BACKENDS)
+    list(JOIN WASH_BACKENDS ", " names)
     message(FATAL_ERROR
-      "wash_add_simulation(${target}): BACKEND must be serial, openmp or mpi, not '${ARG_BACKEND}'")
+      "wash_add_simulation(${target}): BACKEND must be one of ${names}, not '${ARG_BACKEND}'")
+  endif()
+  if(NOT TARGET wash::${ARG_BACKEND})
+    message(FATAL_ERROR "wash_add_simulation(${target}): the ${ARG_BACKEND} backend is not built")
   endif()
   if(NOT TARGET wash::wash)
     message(FATAL_ERROR "wash_add_simulation(${target}): the wash translator is not available")

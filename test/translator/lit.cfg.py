@@ -22,8 +22,11 @@ config.substitutions.insert(0, ("%expect_exit", "python3 " +
     os.path.join(config.test_source_root, "Inputs", "expect_exit.py")))
 
 # %cxx_check FILE: the generated code compiles against the backend runtimes.
-_includes = " ".join("-I" + os.path.join(config.wash_src_root, d) for d in [
-    "runtime/include", "backends/common/include", "backends/serial/include",
-    "backends/openmp/include", "backends/mpi/include"])
+_includes = " ".join("-I" + os.path.join(config.wash_src_root, d) for d in
+    ["runtime/include", "backends/common/include"] +
+    ["backends/%s/include" % b for b in config.wash_backends])
+# REQUIRES: backend-<name>, one feature per line of backends/backends.def.
+for _backend in config.wash_backends:
+    config.available_features.add("backend-" + _backend)
 config.substitutions.append(
     ("%cxx_check", config.cxx + " -std=c++20 -fsyntax-only -fopenmp " + _includes))

@@ -28,18 +28,6 @@
 
 namespace wash::tr {
 
-const char *backendName(Backend B) {
-  switch (B) {
-  case Backend::Serial:
-    return "serial";
-  case Backend::OpenMP:
-    return "openmp";
-  case Backend::MPI:
-    return "mpi";
-  }
-  return "?";
-}
-
 /// The passes that need the AST, then the model passes, whose findings are
 /// reported while the AST's source manager can still place them.
 static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M,

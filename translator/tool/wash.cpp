@@ -20,12 +20,8 @@ using wash::tr::Backend;
 static cl::OptionCategory WashCategory("wash options");
 static cl::opt<std::string> Source(cl::Positional, cl::desc("<simulation.cpp>"), cl::Required,
                                    cl::cat(WashCategory));
-static cl::opt<Backend>
-    TargetBackend("backend", cl::desc("Backend to generate code for"), cl::init(Backend::Serial),
-                  cl::values(clEnumValN(Backend::Serial, "serial", "one process, one thread"),
-                             clEnumValN(Backend::OpenMP, "openmp", "one process, OpenMP threads"),
-                             clEnumValN(Backend::MPI, "mpi", "MPI ranks with halo exchange")),
-                  cl::cat(WashCategory));
+static cl::opt<Backend> TargetBackend("backend", cl::desc("Backend to generate code for"),
+                                      cl::init(Backend::Serial), cl::cat(WashCategory));
 static cl::opt<std::string> OutputDir("o", cl::desc("Directory for generated code"),
                                       cl::value_desc("dir"), cl::init("."), cl::cat(WashCategory));
 static cl::opt<bool> DumpModel("dump-model",
@@ -41,6 +37,9 @@ int main(int Argc, const char **Argv) {
       Ours = I;
       break;
     }
+  // The --backend values: one per line of backends/backends.def.
+  for (const wash::tr::BackendInfo &B : wash::tr::allBackends())
+    TargetBackend.getParser().addLiteralOption(B.Name, B.Id, B.Description);
   cl::HideUnrelatedOptions(WashCategory);
   cl::SetVersionPrinter(
       [](raw_ostream &OS) { OS << "wash " WASH_VERSION " (LLVM " LLVM_VERSION_STRING ")\n"; });

@@ -1,13 +1,12 @@
 //===- Options.h - what the command line asked for --------------*- C++ -*-===//
 #pragma once
 
+#include "wash/translator/Backends.h"
+
 #include <string>
 #include <vector>
 
 namespace wash::tr {
-
-enum class Backend { Serial, OpenMP, MPI };
-const char *backendName(Backend B);
 
 struct Options {
   std::string Source;                    ///< The simulation file.
