@@ -4,18 +4,18 @@
 // RUN: rm -rf %t && %wash --backend=serial -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/finite-checks-in-loop.serial.cpp | FileCheck %s
 // CHECK-LABEL: // Density: force kernel, new neighbour search
-// CHECK: const bool wroteFinite0 = wash::serial::forEachParticleChecked(images.owned, [](Index i) {
+// CHECK: const bool wroteFinite0 = backend.forEachParticleChecked([](Index i) {
 // CHECK-NEXT: Self self{i};
-// CHECK-NEXT: ::Density(self, NeighbourList(grid, P.pos, i));
+// CHECK-NEXT: ::Density(self, NeighbourList(backend.grid(), P.pos, i));
 // CHECK-NEXT: return wash::backend::finite(P.density[i]) &
 // CHECK-NEXT: wash::backend::finite(P.flux[i]);
 // CHECK-NEXT: });
 // CHECK-NEXT: if (!wroteFinite0) {
-// CHECK-NEXT: run.checkFinite(P.density, P.id, images.owned, step, "Density", "density");
-// CHECK-NEXT: run.checkFinite(P.flux, P.id, images.owned, step, "Density", "flux");
+// CHECK-NEXT: run.checkFinite(P.density, P.id, backend.owned(), step, "Density", "density");
+// CHECK-NEXT: run.checkFinite(P.flux, P.id, backend.owned(), step, "Density", "flux");
 // CHECK-NEXT: }
 // CHECK-LABEL: // Look: update kernel
-// CHECK-NEXT: wash::serial::forEachParticle(images.owned, [](Index i) {
+// CHECK-NEXT: backend.forEachParticle([](Index i) {
 // CHECK-NEXT: Self self{i};
 // CHECK-NEXT: ::Look(self);
 // CHECK-NEXT: });

@@ -4,18 +4,22 @@
 // RUN: rm -rf %t && %wash --backend=mpi -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/mpi-driver.mpi.cpp | FileCheck %s
 // RUN: FileCheck %s --check-prefix=HEADER --input-file %t/mpi-driver.wash.hpp
-// HEADER: #include <wash/mpi/for_each.hpp>
-// HEADER: #include <wash/mpi/halo.hpp>
-// CHECK: wash::backend::Run run(wash::backend::Translation{.backend = "mpi", .dimensions = 2, .floatStorage = false, .smoothingLengthSearch = false}, /*writes=*/wash::mpi::rank() == 0);
-// CHECK: wash::mpi::keepInitialShare(P, domain, halo);
+// HEADER: #include <wash/mpi/backend.hpp>
+// HEADER: using Backend = wash::mpi::Backend<2>;
+// CHECK: wash::backend::Run run(translated, backend.writes());
+// CHECK: const std::uint64_t particles = backend.distribute(P, [&] { return run.radius(); });
 // CHECK-LABEL: // Density: force kernel, new neighbour search
-// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(), [](auto send) { send(P.id); send(P.pos); send(P.mass); });
-// CHECK: wash::mpi::forEachParticleChecked(halo.owned, [](Index i) {
+// CHECK-NEXT: // Neighbours read mass and pos.
+// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(),
+// CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); send(P.mass); });
+// CHECK: backend.forEachParticleChecked([](Index i) {
 // CHECK-LABEL: // Pressure: force kernel, reuses the neighbour search of 'Density'
-// CHECK-NEXT: wash::mpi::exchange(halo, [](auto send) { send(P.density); });
+// CHECK-NEXT: // Neighbours read density, written since they were sent.
+// CHECK-NEXT: backend.refresh([](auto send) { send(P.density); });
 // CHECK-LABEL: // Heat: force kernel, reuses the neighbour search of 'Density'
-// CHECK-NOT: exchange
+// CHECK-NOT: refresh
 // CHECK: run.endStep(step, frame);
+// CHECK: backend.report(run);
 #include <wash/wash.hpp>
 #include <vector>
 

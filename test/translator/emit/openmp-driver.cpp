@@ -4,11 +4,14 @@
 // RUN: FileCheck %s --check-prefix=HEADER --input-file %t/openmp-driver.wash.hpp
 // RUN: grep -vE '^// [A-Z-]+:' %t/openmp-driver.openmp.cpp | FileCheck %s --implicit-check-not='{{atom}}ic' --implicit-check-not='{{crit}}ical'
 // RUN: FileCheck %s --check-prefix=CMAKE --input-file %t/CMakeLists.txt
-// HEADER: #include <wash/openmp/for_each.hpp>
-// CHECK: wash::backend::Run run(wash::backend::Translation{.backend = "openmp", .dimensions = 2, .floatStorage = false, .smoothingLengthSearch = false}, /*writes=*/true);
-// CHECK: wash::openmp::forEachParticleChecked(images.owned, [](Index i) {
-// CHECK: ::Count(self, NeighbourList(grid, P.pos, i));
-// CHECK: wash::openmp::forEachParticleChecked(images.owned, [](Index i) {
+// HEADER: #include <wash/openmp/backend.hpp>
+// HEADER: using Backend = wash::openmp::Backend<2>;
+// CHECK: const wash::backend::Translation translated{.backend = Backend::name, .dimensions = 2,
+// CHECK-NEXT: .floatStorage = false, .smoothingLengthSearch = false};
+// CHECK-NEXT: wash::backend::Run run(translated, backend.writes());
+// CHECK: backend.forEachParticleChecked([](Index i) {
+// CHECK: ::Count(self, NeighbourList(backend.grid(), P.pos, i));
+// CHECK: backend.forEachParticleChecked([](Index i) {
 // CHECK: ::Drift(self);
 // CMAKE: find_package(wash REQUIRED CONFIG HINTS
 // CMAKE: add_executable(openmp-driver-openmp openmp-driver.openmp.cpp)

@@ -1,17 +1,17 @@
 // Positions wrap into a periodic box after the kernels that write pos, and
-// only after those; the neighbour search adds periodic images.
+// only after those; the neighbour search (the backend's) adds periodic images.
 // RUN: rm -rf %t && %wash --backend=serial -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/periodic-wrap.serial.cpp | FileCheck %s
-// CHECK: wash::backend::addImages<2>(P, images.owned, box, at.reach, images);
+// CHECK: backend.search(P, at, box, fields);
 // CHECK-LABEL: // Count: force kernel, new neighbour search
 // CHECK-NOT: wrapPositions
 // CHECK-LABEL: // Drift: update kernel
 // CHECK: ::Drift(self);
 // CHECK-NEXT: return wash::backend::finite(P.pos[i]);
 // CHECK-NEXT: });
-// CHECK-NEXT: wash::backend::wrapPositions(P.pos, images.owned, run.box());
+// CHECK-NEXT: wash::backend::wrapPositions(P.pos, backend.owned(), run.box());
 // CHECK-NEXT: if (!wroteFinite1) {
-// CHECK-NEXT: run.checkFinite(P.pos, P.id, images.owned, step, "Drift", "pos");
+// CHECK-NEXT: run.checkFinite(P.pos, P.id, backend.owned(), step, "Drift", "pos");
 #include <wash/wash.hpp>
 #include <vector>
 

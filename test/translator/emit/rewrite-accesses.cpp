@@ -51,4 +51,4 @@ int main() {
 }
 // The driver follows, with its own file name.
 // CHECK: #line {{[0-9]+}} "rewrite-accesses.serial.cpp"
-// CHECK: ::Push(self, NeighbourList(grid, P.pos, i));
+// CHECK: ::Push(self, NeighbourList(backend.grid(), P.pos, i));

@@ -3,13 +3,15 @@
 // RUN: rm -rf %t && %wash --backend=openmp -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/search-reuse.openmp.cpp | FileCheck %s
 // CHECK-LABEL: // A: force kernel, new neighbour search
-// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box());
+// CHECK-NEXT: // Neighbours read pos.
+// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(),
 // CHECK-LABEL: // B: force kernel, reuses the neighbour search of 'A'
 // CHECK-NOT: search(
 // CHECK-LABEL: // Move: update kernel
 // CHECK-NOT: search(
 // CHECK-LABEL: // C: force kernel, new neighbour search
-// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box());
+// CHECK-NEXT: // Neighbours read pos.
+// CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(),
 #include <wash/wash.hpp>
 #include <vector>
 

@@ -7,17 +7,22 @@
 // RUN: %wash --backend=mpi -o %t/mpi %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/mpi/smoothing-length-search.mpi.cpp | FileCheck %s --check-prefix=MPI
 // CHECK: wash::backend::NeighbourTable<3, Stored> table;
-// CHECK: table.build(grid, P.pos, P.id, P.smoothing_length, at, images.owned);
-// CHECK: wash::backend::Run run(wash::backend::Translation{.backend = "openmp", .dimensions = 3, .floatStorage = false, .smoothingLengthSearch = true}, /*writes=*/true);
+// CHECK: table.build(backend.grid(), P.pos, P.id, P.smoothing_length, at, backend.owned());
+// CHECK: .floatStorage = false, .smoothingLengthSearch = true};
 // CHECK-LABEL: // Density: force kernel, new neighbour search
-// CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, images.owned, run.box(), 3, step, "Density"), run.box());
+// CHECK-NEXT: // Neighbours read pos.
+// CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, backend.owned(), run.box(), 3, step, "Density", &Backend::combineMax), run.box(),
 // CHECK: ::Density(self, table.list(i));
 // CHECK-LABEL: // Adapt: update kernel
 // CHECK-LABEL: // Force: force kernel, new neighbour search
+// CHECK-NEXT: // Neighbours read pos.
 // CHECK-NEXT: search(wash::backend::smoothingGeometry(
-// MPI: domain.setCellSize(wash::mpi::domainCellSize(wash::backend::smoothingGeometry(
+// The domain's cells: the largest support radius at the start (MPI calls it).
+// MPI: backend.distribute(P, [&] {
+// MPI-NEXT: return wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, backend.owned(), run.box(), 3, 0, "(start)").domainCellSize();
 // MPI-LABEL: // Density: force kernel, new neighbour search
-// MPI-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, halo.owned, run.box(), 3, step, "Density", [](double v) { return wash::mpi::allreduceMax(v); }), run.box(),
+// MPI-NEXT: // Neighbours read pos.
+// MPI-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, backend.owned(), run.box(), 3, step, "Density", &Backend::combineMax), run.box(),
 #include <wash/wash.hpp>
 #include <vector>
 

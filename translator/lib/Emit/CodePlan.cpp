@@ -130,7 +130,9 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   for (const Kernel &K : M.Kernels)
     Plan.Snapshotted.insert(K.Hazards.begin(), K.Hazards.end());
 
-  Plan.RewrittenAfterSearch = M.RewrittenAfterSearch;
+  // A distributed backend's migration and sort move every column.
+  if (!backendInfo(Target).Distributed)
+    Plan.RewrittenAfterSearch = M.RewrittenAfterSearch;
   for (const DistanceUse &U : M.Distances)
     Plan.DistanceAt[{U.Call.Line, U.Call.Col}] = &U;
   return Plan;

@@ -1,7 +1,15 @@
-//===- DriverParts.cpp - pieces every generated driver shares -------------===//
+//===- DriverParts.cpp - the pieces of the generated driver ---------------===//
 #include "wash/translator/Emit/DriverParts.h"
+#include "wash/translator/Emit/RuntimeNames.h"
 
 namespace wash::tr {
+
+std::string translationText(const CodePlan &Plan) {
+  return rt::Translation +
+         " translated{.backend = Backend::name, .dimensions = " + std::to_string(Plan.Dim) +
+         ",\n      .floatStorage = " + (Plan.Float ? "true" : "false") +
+         ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") + "};\n";
+}
 
 void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
   OS << "Self &create_particle(double density, double mass, double smoothing_length,\n"
@@ -9,7 +17,7 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
      << "  static Self created{0};\n"
      << "  const std::size_t index = P.size();\n"
      << "  if (index >= std::size_t(std::numeric_limits<Index>::max()))\n"
-     << "    throw wash::detail::RunError(\"too many particles for this program's index type\");\n"
+     << "    throw " << rt::RunError << "(\"too many particles for this program's index type\");\n"
      << "  created = Self{Index(index)};\n";
   for (const Field *F : Plan.Stored) {
     OS << "  P." << Plan.Member.at(F->Name) << ".push_back(";
@@ -24,13 +32,6 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
     OS << ");\n";
   }
   OS << "  return created;\n}\n\n";
-}
-
-std::string translationText(const CodePlan &Plan) {
-  return std::string("wash::backend::Translation{.backend = \"") + backendName(Plan.Target) +
-         "\", .dimensions = " + std::to_string(Plan.Dim) +
-         ", .floatStorage = " + (Plan.Float ? "true" : "false") +
-         ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") + "}";
 }
 
 void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
@@ -56,47 +57,44 @@ std::vector<std::string> checkedFields(const Kernel &K, const CodePlan &Plan) {
 } // namespace
 
 void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
-                      const std::string &Step, const std::string &Rows, const std::string &Indent) {
+                      const std::string &Step, const std::string &Indent) {
   for (const std::string &F : checkedFields(K, Plan))
-    OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, " << Rows << ", " << Step
+    OS << Indent << "run.checkFinite(P." << Plan.Member.at(F) << ", P.id, backend.owned(), " << Step
        << ", \"" << K.Function << "\", \"" << F << "\");\n";
 }
 
 void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned KernelIndex, const CodePlan &Plan,
-                      const std::string &LoopNamespace, const std::string &Rows,
                       const std::string &Callee) {
   const std::string Call =
       Callee + (K.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ")" : "(self)");
   const std::vector<std::string> Checked = checkedFields(K, Plan);
   if (Checked.empty()) {
-    OS << "    " << LoopNamespace << "::forEachParticle(" << Rows << ", [](Index i) {\n"
+    OS << "    backend.forEachParticle([](Index i) {\n"
        << "      Self self{i};\n"
        << "      " << Call << ";\n"
        << "    });\n";
-    emitWrap(OS, K, Rows, "    ");
+    emitWrap(OS, K, "    ");
     return;
   }
   const std::string Finite = "wroteFinite" + std::to_string(KernelIndex);
-  OS << "    const bool " << Finite << " = " << LoopNamespace << "::forEachParticleChecked(" << Rows
-     << ", [](Index i) {\n"
+  OS << "    const bool " << Finite << " = backend.forEachParticleChecked([](Index i) {\n"
      << "      Self self{i};\n"
      << "      " << Call << ";\n"
      << "      return";
   for (unsigned F = 0; F < Checked.size(); ++F)
-    OS << (F ? " &\n             " : " ") << "wash::backend::finite(P."
-       << Plan.Member.at(Checked[F]) << "[i])";
+    OS << (F ? " &\n             " : " ") << rt::Finite << "(P." << Plan.Member.at(Checked[F])
+       << "[i])";
   OS << ";\n"
      << "    });\n";
-  emitWrap(OS, K, Rows, "    ");
+  emitWrap(OS, K, "    ");
   OS << "    if (!" << Finite << ") {\n";
-  emitFiniteChecks(OS, K, Plan, "step", Rows, "      ");
+  emitFiniteChecks(OS, K, Plan, "step", "      ");
   OS << "    }\n";
 }
 
-void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Rows,
-              const std::string &Indent) {
+void emitWrap(std::ostream &OS, const Kernel &K, const std::string &Indent) {
   if (K.OwnWrites.count("pos"))
-    OS << Indent << "wash::backend::wrapPositions(P.pos, " << Rows << ", run.box());\n";
+    OS << Indent << rt::WrapPositions << "(P.pos, backend.owned(), run.box());\n";
 }
 
 std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> &Fields) {
@@ -106,62 +104,25 @@ std::string columnsVisitor(const CodePlan &Plan, const std::vector<std::string> 
   return V + " }";
 }
 
-std::string columnsVisitor(const CodePlan &Plan, const FieldSet &Fields) {
-  return columnsVisitor(Plan, std::vector<std::string>(Fields.begin(), Fields.end()));
+std::string fieldList(const std::vector<std::string> &Fields) {
+  std::string L;
+  for (size_t I = 0; I < Fields.size(); ++I)
+    L += (I == 0 ? "" : I + 1 == Fields.size() ? " and " : ", ") + Fields[I];
+  return L;
 }
 
-void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee,
-                   const std::string &Loop, const std::string &Rows, const std::string &Reduce) {
+void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee) {
   std::string Op = K.ReduceOp == "sum" ? "Sum" : K.ReduceOp == "min" ? "Min" : "Max";
   OS << "    {\n"
      << "      static std::vector<double> values;\n"
      << "      values.assign(P.size(), 0.0);\n"
-     << "      " << Loop << "(" << Rows << ", [](Index i) {\n"
+     << "      backend.forEachParticle([](Index i) {\n"
      << "        Self self{i};\n"
      << "        values[i] = " << Callee << "(self);\n"
      << "      });\n"
-     << "      wash::set_variable(\"" << K.Variable << "\", " << Reduce << "(P.id, values, " << Rows
-     << ", wash::detail::ReduceOp::" << Op << "));\n"
+     << "      " << rt::SetVariable << "(\"" << K.Variable << "\", backend.reduce(P.id, values, "
+     << rt::ReduceOp << "::" << Op << "));\n"
      << "    }\n";
-}
-
-void emitIterations(std::ostream &OS, const Model &M,
-                    const std::function<void(unsigned)> &EmitKernel) {
-  OS << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
-  for (unsigned K = 0; K < M.Kernels.size(); ++K)
-    if (M.Kernels[K].Kind != KernelKind::Init)
-      EmitKernel(K);
-  OS << "    run.endStep(step, frame);\n"
-     << "  }\n";
-}
-
-std::string searchGeometryText(const CodePlan &Plan, const Kernel &K, const std::string &Rows,
-                               const std::string &GlobalMax) {
-  if (!Plan.SmoothingSearch)
-    return "wash::backend::fixedGeometry(run.radius())";
-  return "wash::backend::smoothingGeometry(run.support(), " + Plan.readColumn("smoothing_length") +
-         ", P.id, " + Rows + ", run.box(), " + std::to_string(Plan.Dim) + ", step, \"" +
-         K.Function + "\"" + (GlobalMax.empty() ? "" : ", " + GlobalMax) + ")";
-}
-
-std::string neighbourTableDeclaration(const CodePlan &Plan) {
-  if (!Plan.SmoothingSearch)
-    return "";
-  return "wash::backend::NeighbourTable<" + std::to_string(Plan.Dim) +
-         ", Stored> table; // the lists of the current search\n";
-}
-
-std::string neighbourTableBuild(const CodePlan &Plan, const std::string &Rows) {
-  if (!Plan.SmoothingSearch)
-    return "";
-  return "  table.build(grid, P.pos, P.id, " + Plan.readColumn("smoothing_length") + ", at, " +
-         Rows + ");\n";
-}
-
-std::string neighbourListText(const CodePlan &Plan) {
-  if (!Plan.SmoothingSearch)
-    return "NeighbourList(grid, P.pos, i)";
-  return "table.list(i)";
 }
 
 std::string kernelComment(const Model &M, unsigned K) {
@@ -176,8 +137,49 @@ std::string kernelComment(const Model &M, unsigned K) {
   return C;
 }
 
+std::string searchGeometryText(const CodePlan &Plan, const Kernel &K) {
+  if (!Plan.SmoothingSearch)
+    return rt::FixedGeometry + "(run.radius())";
+  return rt::SmoothingGeometry + "(run.support(), " + Plan.readColumn("smoothing_length") +
+         ", P.id, backend.owned(), run.box(), " + std::to_string(Plan.Dim) + ", step, \"" +
+         K.Function + "\", &Backend::combineMax)";
+}
+
+std::string domainCellSizeText(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "[&] { return run.radius(); }";
+  return "[&] {\n"
+         "    return " +
+         rt::SmoothingGeometry + "(run.support(), " + Plan.readColumn("smoothing_length") +
+         ", P.id, backend.owned(), run.box(), " + std::to_string(Plan.Dim) +
+         ", 0, \"(start)\").domainCellSize();\n"
+         "  }";
+}
+
+std::string neighbourTableDeclaration(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "";
+  return rt::NeighbourTable + "<" + std::to_string(Plan.Dim) +
+         ", Stored> table; // the lists of the current search\n";
+}
+
+std::string neighbourTableBuild(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "";
+  return "  table.build(backend.grid(), P.pos, P.id, " + Plan.readColumn("smoothing_length") +
+         ", at, backend.owned());\n";
+}
+
+std::string neighbourListText(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "NeighbourList(backend.grid(), P.pos, i)";
+  return "table.list(i)";
+}
+
 void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan) {
   for (const std::string &F : Plan.Snapshotted) {
+    if (!K.NeighbourReads.count(F))
+      continue; // the kernel never reads it through a neighbour
     const std::string &Col = Plan.Member.at(F);
     if (K.Hazards.count(F))
       OS << "    " << Col << "_snapshot = P." << Col

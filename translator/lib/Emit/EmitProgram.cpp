@@ -1,8 +1,9 @@
 //===- EmitProgram.cpp - plan, rewrite, emit ------------------------------===//
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Emit/CodePlan.h"
-#include "wash/translator/Emit/EmitMpi.h"
-#include "wash/translator/Emit/EmitSharedMemory.h"
+#include "wash/translator/Emit/EmitCMakeLists.h"
+#include "wash/translator/Emit/EmitDriver.h"
+#include "wash/translator/Emit/EmitStorage.h"
 #include "wash/translator/Emit/RewriteSource.h"
 
 #include "llvm/Support/FileSystem.h"
@@ -65,12 +66,11 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
 
   // The user's code keeps its own file name and line numbers (#line), so
   // compiler messages and source_location point at the simulation source.
-  std::string Source = generatedBanner(Plan) + "#line 1 \"" + absolute(Opts.Source) + "\"\n" +
-                       *Body;
+  std::string Source =
+      generatedBanner(Plan) + "#line 1 \"" + absolute(Opts.Source) + "\"\n" + *Body;
   size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;
   Source += "#line " + std::to_string(NextLine) + " \"" + Plan.sourceName() + "\"\n" +
-            (Plan.Target == Backend::MPI ? emitMpiDriver(M, Plan, Callees)
-                                         : emitSharedMemoryDriver(M, Plan, Callees));
+            emitDriver(M, Plan, Callees);
 
   Files = {{Plan.headerName(), emitStorageHeader(M, Plan)},
            {Plan.sourceName(), Source},

@@ -22,12 +22,6 @@
 
 namespace wash::mpi {
 
-/// The domain's cell size under the smoothing-length rule: the largest support
-/// radius when the run starts (fixed; halos reach as far as each search needs).
-inline double domainCellSize(const backend::SearchGeometry &g) {
-  return g.reach > 0.0 ? g.reach : 1.0;
-}
-
 template <int D> class Domain {
 public:
   using Cell = std::array<std::int64_t, D>;

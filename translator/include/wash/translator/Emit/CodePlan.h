@@ -21,7 +21,7 @@ struct CodePlan {
   Backend Target = Backend::Serial;
   std::string Stem; ///< The simulation file's name without extension.
   unsigned Dim = 2;
-  bool Float = false; ///< Storage precision.
+  bool Float = false;           ///< Storage precision.
   bool SmoothingSearch = false; ///< Neighbours within k * h_i (else one radius).
 
   /// Every field by name, and the live ones in storage order (Model::Fields
@@ -38,8 +38,8 @@ struct CodePlan {
   /// (line, column) of the call; none if the lists keep no distances.
   std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
   bool keepsDistances() const { return !DistanceAt.empty(); }
-  /// Model::RewrittenAfterSearch: columns the shared-memory search's sort
-  /// leaves in the old order (the MPI backend moves every column).
+  /// Model::RewrittenAfterSearch: columns the search's sort leaves in the
+  /// old order (none on a distributed backend, which moves every column).
   FieldSet RewrittenAfterSearch;
   bool reordersFewer() const {
     for (const Field *F : Stored)

@@ -1,8 +1,7 @@
-//===- EmitSharedMemory.h - the serial and OpenMP programs ------*- C++ -*-===//
+//===- EmitStorage.h - the storage header of a generated program -*- C++ -*-===//
 //
-// The parts of a serial or OpenMP program that do not come from the user's
-// source: the storage header it includes in place of <wash/wash.hpp>, and the
-// driver appended after the user's code. Clang-free.
+// The header a generated program includes in place of <wash/wash.hpp>: one
+// column per live field, the snapshots and the backend type. Clang-free.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -21,10 +20,5 @@ std::string generatedBanner(const CodePlan &Plan, const std::string &CommentLead
 /// `<stem>.wash.hpp`: columns of the live fields, snapshot accessors, and
 /// the declarations of the generated create_particle and start.
 std::string emitStorageHeader(const Model &M, const CodePlan &Plan);
-
-/// The run: create_particle, the neighbour search, output frames and start(),
-/// calling Callees[K] for Model::Kernels[K] (names valid at namespace scope).
-std::string emitSharedMemoryDriver(const Model &M, const CodePlan &Plan,
-                                   const std::vector<std::string> &Callees);
 
 } // namespace wash::tr
