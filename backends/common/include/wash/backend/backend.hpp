@@ -44,6 +44,21 @@ struct NoColumns {
   template <typename F> void operator()(F) const {}
 };
 
+/// The particle loops of a backend type `Derived`, over its owned() rows,
+/// with `Loop`'s forEachParticle and forEachParticleChecked.
+template <typename Derived, typename Loop> class ParticleLoops {
+public:
+  template <typename Body> void forEachParticle(Body body) const {
+    Loop::forEachParticle(self().owned(), body);
+  }
+  template <typename Body> bool forEachParticleChecked(Body body) const {
+    return Loop::forEachParticleChecked(self().owned(), body);
+  }
+
+private:
+  const Derived &self() const { return static_cast<const Derived &>(*this); }
+};
+
 template <typename B, int D = B::dimensions>
 concept ParticleBackend =
     requires(B b, const B cb, MinimalParticles<D> &P, const SearchGeometry &at,

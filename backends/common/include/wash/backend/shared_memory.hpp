@@ -7,6 +7,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/backend/backend.hpp>
 #include <wash/backend/cell_grid.hpp>
 #include <wash/backend/columns.hpp>
 #include <wash/backend/periodic.hpp>
@@ -20,7 +21,8 @@
 
 namespace wash::backend {
 
-template <int D, typename Loop> class SharedMemoryBackend {
+template <int D, typename Loop>
+class SharedMemoryBackend : public ParticleLoops<SharedMemoryBackend<D, Loop>, Loop> {
 public:
   static constexpr int dimensions = D;
   static constexpr const char *name = Loop::name;
@@ -54,13 +56,6 @@ public:
   }
 
   template <typename Fields> void refresh(Fields fields) { refreshImages(images_, fields); }
-
-  template <typename Body> void forEachParticle(Body body) const {
-    Loop::forEachParticle(images_.owned, body);
-  }
-  template <typename Body> bool forEachParticleChecked(Body body) const {
-    return Loop::forEachParticleChecked(images_.owned, body);
-  }
 
   double reduce(const Column<std::uint64_t> &ids, const std::vector<double> &values,
                 detail::ReduceOp op) const {

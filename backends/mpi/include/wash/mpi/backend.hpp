@@ -7,6 +7,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/backend/backend.hpp>
 #include <wash/backend/cell_grid.hpp>
 #include <wash/backend/run.hpp>
 #include <wash/backend/search_geometry.hpp>
@@ -19,7 +20,7 @@
 
 namespace wash::mpi {
 
-template <int D> class Backend {
+template <int D> class Backend : public backend::ParticleLoops<Backend<D>, Loop> {
 public:
   static constexpr int dimensions = D;
   static constexpr const char *name = "mpi";
@@ -54,13 +55,6 @@ public:
 
   /// Local images, then the halo copies of the columns `fields` visits.
   template <typename Fields> void refresh(Fields fields) { exchange(halo_, fields); }
-
-  template <typename Body> void forEachParticle(Body body) const {
-    mpi::forEachParticle(halo_.owned, body);
-  }
-  template <typename Body> bool forEachParticleChecked(Body body) const {
-    return mpi::forEachParticleChecked(halo_.owned, body);
-  }
 
   double reduce(const backend::Column<std::uint64_t> &ids, const std::vector<double> &values,
                 ::wash::detail::ReduceOp op) const {

@@ -27,20 +27,21 @@ private:
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-/// Calls body(i) for every owned particle position, on all OpenMP threads of
-/// this rank (hybrid MPI + OpenMP): the OpenMP backend's loop, timed.
-template <typename Body>
-inline void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
-  BusyClock clock;
-  wash::openmp::Loop::forEachParticle(rows, body);
-}
-
-/// The same loop for a body that returns whether what it wrote is finite:
-/// returns whether every call did (on this rank).
-template <typename Body>
-inline bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
-  BusyClock clock;
-  return wash::openmp::Loop::forEachParticleChecked(rows, body);
-}
+/// The particle loop of an MPI rank: the OpenMP backend's loop, on all
+/// threads of this rank (hybrid MPI + OpenMP), timed.
+struct Loop {
+  template <typename Body>
+  static void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
+    BusyClock clock;
+    wash::openmp::Loop::forEachParticle(rows, body);
+  }
+  /// For a body that returns whether what it wrote is finite: returns
+  /// whether every call did (on this rank).
+  template <typename Body>
+  static bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
+    BusyClock clock;
+    return wash::openmp::Loop::forEachParticleChecked(rows, body);
+  }
+};
 
 } // namespace wash::mpi
