@@ -1,7 +1,10 @@
 //===- Pipeline.cpp - the recipe ------------------------------------------===//
 //
 // parse -> model -> analyse -> plan -> emit. Every pass is one function in
-// its own file; this is the only place that knows their order.
+// its own file; this is the only place that knows their order. The model
+// passes take the parts of the model they read and return what they
+// compute; the recipe stores it in the model, which the dump and the
+// emitters read.
 //
 //===----------------------------------------------------------------------===//
 #include "wash/translator/Pipeline.h"
@@ -40,6 +43,47 @@ const char *backendName(Backend B) {
   return "?";
 }
 
+// Where each model pass's result goes: the dump and the emitters read it in
+// the model.
+static void storeAccessSets(Model &M, std::vector<AccessSets> Sets) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].OwnReads = std::move(Sets[I].OwnReads);
+    M.Kernels[I].OwnWrites = std::move(Sets[I].OwnWrites);
+    M.Kernels[I].NeighbourReads = std::move(Sets[I].NeighbourReads);
+  }
+}
+
+static void storeFields(Model &M, ResolvedFields R) {
+  M.Fields = std::move(R.Fields);
+  M.Findings.insert(M.Findings.end(), R.Findings.begin(), R.Findings.end());
+}
+
+static void storeLiveness(Model &M, Liveness L) {
+  for (unsigned I = 0; I < M.Fields.size(); ++I) {
+    M.Fields[I].Live = L.Fields[I].Live;
+    M.Fields[I].OutputOnly = L.Fields[I].OutputOnly;
+  }
+  M.Findings.insert(M.Findings.end(), L.Findings.begin(), L.Findings.end());
+}
+
+static void storeHazards(Model &M, std::vector<FieldSet> Hazards) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].Hazards = std::move(Hazards[I]);
+}
+
+static void storeSearchPlan(Model &M, SearchPlan P) {
+  M.Searches = std::move(P.Searches);
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].SearchGroup = P.GroupOf[I];
+}
+
+static void storeHalos(Model &M, std::vector<KernelHalo> Halos) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].HaloFields = std::move(Halos[I].Fields);
+    M.Kernels[I].HaloSends = std::move(Halos[I].Sends);
+  }
+}
+
 /// The passes that need the AST, then the model passes, whose findings are
 /// reported while the AST's source manager can still place them.
 static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M,
@@ -52,16 +96,16 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Mo
   findAlwaysWrites(Ctx, Refs, M);
 
   // Analyse: facts about fields and kernels.
-  summariseAccesses(M);
-  resolveFields(M);
-  computeLiveness(M);
-  findHazards(M);
+  storeAccessSets(M, summariseAccesses(M.Kernels, M.searchesBySmoothingLength()));
+  storeFields(M, resolveFields(M.Sim.Dimension, M.Forces, M.Kernels));
+  storeLiveness(M, computeLiveness(M.Fields, M.Kernels));
+  storeHazards(M, findHazards(M.Kernels));
 
   // Plan: what the generated program must do around each kernel.
-  planNeighbourSearch(M);
-  planNeighbourDistances(M);
-  planSearchReorder(M);
-  planHalos(M);
+  storeSearchPlan(M, planNeighbourSearch(M.Kernels, M.searchesBySmoothingLength()));
+  M.Distances = planNeighbourDistances(M.Distances, M.Sim, M.Kernels);
+  M.RewrittenAfterSearch = planSearchReorder(M.Kernels, M.Searches);
+  storeHalos(M, planHalos(M.Kernels, M.Searches));
 
   for (const Finding &F : M.Findings)
     D.report(F);
