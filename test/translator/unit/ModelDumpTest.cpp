@@ -68,3 +68,41 @@ TEST(ModelDump, ForceKernelSection) {
       << Out;
   EXPECT_NE(Out.find("neighbour-searches\n  0: k\n"), std::string::npos) << Out;
 }
+
+// --dump-after prints models the later passes have not filled in.
+TEST(ModelDump, AnEmptyModelPrintsEverySectionEmpty) {
+  EXPECT_EQ(dump(Model{}), "simulation\n"
+                           "  precision: double\n"
+                           "  dimension: 2\n"
+                           "  influence-radius: unset\n"
+                           "  smoothing-length-support: unset\n"
+                           "  max-iterations: unset\n"
+                           "  simulation-name: unset\n"
+                           "  output-file-name: unset\n"
+                           "  starts: no\n"
+                           "fields\n"
+                           "kernels\n"
+                           "neighbour-searches\n"
+                           "rewritten-after-search: -\n"
+                           "neighbour-distances: none\n");
+}
+
+TEST(ModelDump, SetsBeforeTheFieldsAreResolvedPrintTheirNames) {
+  Model M = oneForceKernel();
+  summarise(M);
+  std::string Out = dump(M);
+  EXPECT_EQ(Out.substr(Out.find("fields\n")), "fields\n"
+                                              "kernels\n"
+                                              "  0: force k @9:3\n"
+                                              "    own-reads: -\n"
+                                              "    own-writes: t\n"
+                                              "    always-writes: -\n"
+                                              "    neighbour-reads: t\n"
+                                              "    hazards: -\n"
+                                              "    search: -1\n"
+                                              "    halo: -\n"
+                                              "    halo-exchange: -\n"
+                                              "neighbour-searches\n"
+                                              "rewritten-after-search: -\n"
+                                              "neighbour-distances: none\n");
+}
