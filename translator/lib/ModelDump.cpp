@@ -16,7 +16,8 @@ static void printSet(const Model &M, std::ostream &OS, const char *Label, const 
   for (const Field &F : M.Fields)
     if (S.count(F.Name))
       OS << ' ' << F.Name;
-  // Names without a field only appear when an earlier pass failed.
+  // Names without a field appear before resolveFields ran (--dump-after) or
+  // when an earlier pass failed.
   for (const std::string &N : S)
     if (!M.findField(N))
       OS << ' ' << N;

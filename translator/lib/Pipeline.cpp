@@ -1,7 +1,10 @@
 //===- Pipeline.cpp - the recipe ------------------------------------------===//
 //
 // parse -> model -> analyse -> plan -> emit. Every pass is one function in
-// its own file; this is the only place that knows their order.
+// its own file; this is the only place that knows their order. The model
+// passes take the parts of the model they read and return what they
+// compute; the recipe stores it in the model, which the dump and the
+// emitters read.
 //
 //===----------------------------------------------------------------------===//
 #include "wash/translator/Pipeline.h"
@@ -22,56 +25,163 @@
 #include "wash/translator/Plan/NeighbourSearch.h"
 #include "wash/translator/Plan/SearchReorder.h"
 
+#include "llvm/ADT/Twine.h"
+#include "llvm/Support/ErrorHandling.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <iostream>
+#include <iterator>
 
 namespace wash::tr {
 
-/// The passes that need the AST, then the model passes, whose findings are
-/// reported while the AST's source manager can still place them.
-static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M,
-                    AstRefs &Refs) {
+/// Each pass's --dump-after name, indexed by PassId.
+static constexpr const char *PassNames[] = {
+#define WASH_PASS(Id, Name) Name,
+#include "wash/translator/Passes.def"
+};
+static constexpr unsigned NumPasses = std::size(PassNames);
+/// --dump-model prints the model after the last pass.
+static constexpr PassId LastPass = static_cast<PassId>(NumPasses - 1);
+
+const char *passName(PassId P) { return PassNames[static_cast<unsigned>(P)]; }
+
+std::optional<PassId> findPass(std::string_view Name) {
+  for (unsigned I = 0; I < NumPasses; ++I)
+    if (Name == PassNames[I])
+      return static_cast<PassId>(I);
+  return std::nullopt;
+}
+
+std::string passNames(std::string_view Separator) {
+  std::string Names;
+  for (const char *Name : PassNames)
+    Names += (Names.empty() ? "" : std::string(Separator)) + Name;
+  return Names;
+}
+
+// Where each model pass's result goes: the dump and the emitters read it in
+// the model.
+static void storeAccessSets(Model &M, std::vector<AccessSets> Sets) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].OwnReads = std::move(Sets[I].OwnReads);
+    M.Kernels[I].OwnWrites = std::move(Sets[I].OwnWrites);
+    M.Kernels[I].NeighbourReads = std::move(Sets[I].NeighbourReads);
+  }
+}
+
+static void storeFields(Model &M, ResolvedFields R) {
+  M.Fields = std::move(R.Fields);
+  M.Findings.insert(M.Findings.end(), R.Findings.begin(), R.Findings.end());
+}
+
+static void storeLiveness(Model &M, Liveness L) {
+  for (unsigned I = 0; I < M.Fields.size(); ++I) {
+    M.Fields[I].Live = L.Fields[I].Live;
+    M.Fields[I].OutputOnly = L.Fields[I].OutputOnly;
+  }
+  M.Findings.insert(M.Findings.end(), L.Findings.begin(), L.Findings.end());
+}
+
+static void storeHazards(Model &M, std::vector<FieldSet> Hazards) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].Hazards = std::move(Hazards[I]);
+}
+
+static void storeSearchPlan(Model &M, SearchPlan P) {
+  M.Searches = std::move(P.Searches);
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].SearchGroup = P.GroupOf[I];
+}
+
+static void storeHalos(Model &M, std::vector<KernelHalo> Halos) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].HaloFields = std::move(Halos[I].Fields);
+    M.Kernels[I].HaloSends = std::move(Halos[I].Sends);
+  }
+}
+
+/// The passes that need the AST, then the model passes, up to and including
+/// StopAfter (all of them without it).
+static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
+                    std::optional<PassId> StopAfter, Model &M, AstRefs &Refs) {
+  // Called after each pass: every pass of Passes.def must be here, in its
+  // order, or --dump-after would stop in the wrong place.
+  unsigned Next = 0;
+  auto Stop = [&](PassId P) {
+    if (static_cast<unsigned>(P) != Next++)
+      llvm::report_fatal_error("the recipe and Passes.def disagree at pass '" +
+                               llvm::Twine(passName(P)) + "'");
+    return P == StopAfter;
+  };
+
   // Model: read the simulation out of the AST.
-  if (!detectDimension(Ctx, D, ParsedDim, M) || !collectSimulation(Ctx, D, M, Refs) ||
-      !inferAccesses(Ctx, D, Refs, M))
+  if (!detectDimension(Ctx, D, ParsedDim, M) || Stop(PassId::DetectDimension))
+    return;
+  if (!collectSimulation(Ctx, D, M, Refs) || Stop(PassId::CollectSimulation))
+    return;
+  if (!inferAccesses(Ctx, D, Refs, M) || Stop(PassId::InferAccesses))
     return;
   findNeighbourDistances(Ctx, D, M);
+  if (Stop(PassId::FindNeighbourDistances))
+    return;
   findAlwaysWrites(Ctx, Refs, M);
+  if (Stop(PassId::FindAlwaysWrites))
+    return;
 
   // Analyse: facts about fields and kernels.
-  summariseAccesses(M);
-  resolveFields(M);
-  computeLiveness(M);
-  findHazards(M);
+  storeAccessSets(M, summariseAccesses(M.Kernels, M.searchesBySmoothingLength()));
+  if (Stop(PassId::SummariseAccesses))
+    return;
+  storeFields(M, resolveFields(M.Sim.Dimension, M.Forces, M.Kernels));
+  if (Stop(PassId::ResolveFields))
+    return;
+  storeLiveness(M, computeLiveness(M.Fields, M.Kernels));
+  if (Stop(PassId::ComputeLiveness))
+    return;
+  storeHazards(M, findHazards(M.Kernels));
+  if (Stop(PassId::FindHazards))
+    return;
 
   // Plan: what the generated program must do around each kernel.
-  planNeighbourSearch(M);
-  planNeighbourDistances(M);
-  planSearchReorder(M);
-  planHalos(M);
-
-  for (const Finding &F : M.Findings)
-    D.report(F);
+  storeSearchPlan(M, planNeighbourSearch(M.Kernels, M.searchesBySmoothingLength()));
+  if (Stop(PassId::PlanNeighbourSearch))
+    return;
+  M.Distances = planNeighbourDistances(M.Distances, M.Sim, M.Kernels);
+  if (Stop(PassId::PlanNeighbourDistances))
+    return;
+  M.RewrittenAfterSearch = planSearchReorder(M.Kernels, M.Searches);
+  if (Stop(PassId::PlanSearchReorder))
+    return;
+  storeHalos(M, planHalos(M.Kernels, M.Searches));
+  Stop(PassId::PlanHalos);
+  if (Next != NumPasses)
+    llvm::report_fatal_error("the recipe ran fewer passes than Passes.def lists");
 }
 
 int runPipeline(const Options &Opts) {
+  // Where to stop and print the model, if anywhere.
+  std::optional<PassId> DumpAfter = Opts.DumpAfter;
+  if (!DumpAfter && Opts.DumpModel)
+    DumpAfter = LastPass;
   Model M;
   M.SourceFile = Opts.Source;
   std::vector<GeneratedFile> Files;
   bool Failed = false;
   bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim) {
     AstRefs Refs;
-    analyse(Ctx, D, Dim, M, Refs);
+    analyse(Ctx, D, Dim, DumpAfter, M, Refs);
+    // Reported while the AST's source manager can still place them.
+    for (const Finding &F : M.Findings)
+      D.report(F);
     Failed = D.hasErrors() || M.hasErrors();
     // Emit: rewrite the user's code and generate the rest, still in memory.
-    if (!Failed && !Opts.DumpModel)
+    if (!Failed && !DumpAfter)
       Failed = !emitProgram(Ctx, D, M, Refs, Opts, Files) || D.hasErrors();
   });
   if (!Parsed || Failed)
     return 1;
 
-  if (Opts.DumpModel) {
+  if (DumpAfter) {
     dumpModel(M, std::cout);
     return std::cout.good() ? 0 : 1;
   }

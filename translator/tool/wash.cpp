@@ -12,6 +12,7 @@
 #include "llvm/Support/InitLLVM.h"
 #include "llvm/Support/raw_ostream.h"
 
+#include <cstdlib>
 #include <cstring>
 
 using namespace llvm;
@@ -27,6 +28,23 @@ static cl::opt<std::string> OutputDir("o", cl::desc("Directory for generated cod
 static cl::opt<bool> DumpModel("dump-model",
                                cl::desc("Print the analysed model of the simulation and stop"),
                                cl::cat(WashCategory));
+// Checked as it is parsed, so `--dump-after=help` needs no simulation file.
+static cl::opt<std::string>
+    DumpAfter("dump-after",
+              cl::desc("Print the model right after the named pass and stop ('help' lists them)"),
+              cl::value_desc("pass"), cl::cat(WashCategory),
+              cl::callback([](const std::string &Name) {
+                if (Name == "help") {
+                  outs() << wash::tr::passNames("\n") << "\n";
+                  outs().flush();
+                  std::exit(0);
+                }
+                if (!wash::tr::findPass(Name)) {
+                  errs() << "wash: error: unknown pass '" << Name
+                         << "'; passes are: " << wash::tr::passNames(", ") << "\n";
+                  std::exit(1);
+                }
+              }));
 
 int main(int Argc, const char **Argv) {
   InitLLVM X(Argc, Argv);
@@ -56,6 +74,8 @@ int main(int Argc, const char **Argv) {
   Opts.Target = TargetBackend;
   Opts.OutputDir = OutputDir;
   Opts.DumpModel = DumpModel;
+  if (DumpAfter.getNumOccurrences())
+    Opts.DumpAfter = wash::tr::findPass(DumpAfter);
   Opts.ExecutablePath = sys::fs::getMainExecutable(Argv[0], reinterpret_cast<void *>(&main));
   return wash::tr::runPipeline(Opts);
 }

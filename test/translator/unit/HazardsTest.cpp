@@ -1,6 +1,5 @@
 #include "wash/translator/Analysis/Hazards.h"
 #include "TestModels.h"
-#include "wash/translator/Analysis/SummariseAccesses.h"
 
 #include <gtest/gtest.h>
 
@@ -12,16 +11,14 @@ TEST(Hazards, OwnWriteAndNeighbourReadOfTheSameField) {
   M.Kernels.push_back(kernel(KernelKind::Force, "k",
                              {own("vel", Mode::Write), neighbour("vel"), neighbour("pos"),
                               own("density", Mode::Write), own("density", Mode::Read)}));
-  summariseAccesses(M);
-  findHazards(M);
-  EXPECT_EQ(M.Kernels[0].Hazards, FieldSet{"vel"});
+  summarise(M);
+  EXPECT_EQ(findHazards(M.Kernels), std::vector<FieldSet>{FieldSet{"vel"}});
 }
 
 TEST(Hazards, UpdateKernelsHaveNone) {
   Model M;
   M.Kernels.push_back(
       kernel(KernelKind::Update, "u", {own("vel", Mode::Write), own("vel", Mode::Read)}));
-  summariseAccesses(M);
-  findHazards(M);
-  EXPECT_TRUE(M.Kernels[0].Hazards.empty());
+  summarise(M);
+  EXPECT_EQ(findHazards(M.Kernels), std::vector<FieldSet>{FieldSet{}});
 }

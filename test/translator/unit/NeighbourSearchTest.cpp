@@ -1,19 +1,14 @@
 #include "wash/translator/Plan/NeighbourSearch.h"
 #include "TestModels.h"
-#include "wash/translator/Analysis/SummariseAccesses.h"
 
 #include <gtest/gtest.h>
 
 using namespace wash::tr;
 using namespace wash::tr::test;
 
-static std::vector<int> groups(Model &M) {
-  summariseAccesses(M);
-  planNeighbourSearch(M);
-  std::vector<int> G;
-  for (const Kernel &K : M.Kernels)
-    G.push_back(K.SearchGroup);
-  return G;
+static SearchPlan plan(Model &M) {
+  summarise(M);
+  return planNeighbourSearch(M.Kernels, M.searchesBySmoothingLength());
 }
 
 TEST(NeighbourSearch, SeedShapeSharesOneSearch) {
@@ -23,9 +18,10 @@ TEST(NeighbourSearch, SeedShapeSharesOneSearch) {
   M.Kernels.push_back(kernel(KernelKind::Force, "density", {neighbour("pos")}));
   M.Kernels.push_back(kernel(KernelKind::Force, "force", {own("vel", Mode::Write)}));
   M.Kernels.push_back(kernel(KernelKind::Update, "after", {own("vel", Mode::Write)}));
-  EXPECT_EQ(groups(M), (std::vector<int>{-1, -1, 0, 0, -1}));
-  ASSERT_EQ(M.Searches.size(), 1u);
-  EXPECT_EQ(M.Searches[0].Kernels, (std::vector<unsigned>{2, 3}));
+  SearchPlan P = plan(M);
+  EXPECT_EQ(P.GroupOf, (std::vector<int>{-1, -1, 0, 0, -1}));
+  ASSERT_EQ(P.Searches.size(), 1u);
+  EXPECT_EQ(P.Searches[0].Kernels, (std::vector<unsigned>{2, 3}));
 }
 
 TEST(NeighbourSearch, PosWriteBetweenOrInsideSplits) {
@@ -36,5 +32,5 @@ TEST(NeighbourSearch, PosWriteBetweenOrInsideSplits) {
   M.Kernels.push_back(kernel(KernelKind::Force, "c", {}));
   M.Kernels.push_back(kernel(KernelKind::Update, "v", {own("pos", Mode::Read)}));
   M.Kernels.push_back(kernel(KernelKind::Force, "d", {}));
-  EXPECT_EQ(groups(M), (std::vector<int>{0, 1, -1, 2, -1, 2}));
+  EXPECT_EQ(plan(M).GroupOf, (std::vector<int>{0, 1, -1, 2, -1, 2}));
 }

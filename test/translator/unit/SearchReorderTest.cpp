@@ -1,7 +1,5 @@
 #include "wash/translator/Plan/SearchReorder.h"
 #include "TestModels.h"
-#include "wash/translator/Analysis/SummariseAccesses.h"
-#include "wash/translator/Plan/NeighbourSearch.h"
 
 #include <gtest/gtest.h>
 
@@ -16,10 +14,9 @@ Kernel always(Kernel K, FieldSet Writes) {
 }
 
 FieldSet plan(Model &M) {
-  summariseAccesses(M);
-  planNeighbourSearch(M);
-  planSearchReorder(M);
-  return M.RewrittenAfterSearch;
+  summarise(M);
+  planSearches(M);
+  return planSearchReorder(M.Kernels, M.Searches);
 }
 
 } // namespace

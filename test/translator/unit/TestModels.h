@@ -1,7 +1,9 @@
 //===- TestModels.h - small models for the unit tests -----------*- C++ -*-===//
 #pragma once
 
+#include "wash/translator/Analysis/SummariseAccesses.h"
 #include "wash/translator/Model.h"
+#include "wash/translator/Plan/NeighbourSearch.h"
 
 namespace wash::tr::test {
 
@@ -20,6 +22,26 @@ inline Kernel kernel(KernelKind K, const std::string &Name, std::vector<Access> 
   R.Function = Name;
   R.Accesses = std::move(As);
   return R;
+}
+
+// The passes most others read, stored in the model as the pipeline does.
+
+/// summariseAccesses: each kernel's OwnReads, OwnWrites and NeighbourReads.
+inline void summarise(Model &M) {
+  std::vector<AccessSets> Sets = summariseAccesses(M.Kernels, M.searchesBySmoothingLength());
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].OwnReads = Sets[I].OwnReads;
+    M.Kernels[I].OwnWrites = Sets[I].OwnWrites;
+    M.Kernels[I].NeighbourReads = Sets[I].NeighbourReads;
+  }
+}
+
+/// planNeighbourSearch: Model::Searches and each kernel's SearchGroup.
+inline void planSearches(Model &M) {
+  SearchPlan P = planNeighbourSearch(M.Kernels, M.searchesBySmoothingLength());
+  M.Searches = P.Searches;
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].SearchGroup = P.GroupOf[I];
 }
 
 } // namespace wash::tr::test

@@ -6,14 +6,16 @@
 
 namespace wash::tr {
 
-void findHazards(Model &M) {
-  for (Kernel &K : M.Kernels) {
-    K.Hazards.clear();
+std::vector<FieldSet> findHazards(const std::vector<Kernel> &Kernels) {
+  std::vector<FieldSet> Result(Kernels.size());
+  for (unsigned I = 0; I < Kernels.size(); ++I) {
+    const Kernel &K = Kernels[I];
     if (K.Kind != KernelKind::Force)
       continue;
     std::set_intersection(K.OwnWrites.begin(), K.OwnWrites.end(), K.NeighbourReads.begin(),
-                          K.NeighbourReads.end(), std::inserter(K.Hazards, K.Hazards.end()));
+                          K.NeighbourReads.end(), std::inserter(Result[I], Result[I].end()));
   }
+  return Result;
 }
 
 } // namespace wash::tr

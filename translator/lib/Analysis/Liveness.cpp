@@ -3,18 +3,22 @@
 
 namespace wash::tr {
 
-void computeLiveness(Model &M) {
-  for (Field &F : M.Fields) {
+Liveness computeLiveness(const std::vector<Field> &Fields, const std::vector<Kernel> &Kernels) {
+  Liveness Result;
+  for (const Field &F : Fields) {
     bool Read = false, Written = false;
-    for (const Kernel &K : M.Kernels) {
+    for (const Kernel &K : Kernels) {
       Read |= K.OwnReads.count(F.Name) || K.NeighbourReads.count(F.Name);
       Written |= K.OwnWrites.count(F.Name) > 0;
     }
-    F.Live = Read || Written || (F.Origin == FieldOrigin::Builtin && isAlwaysOutput(F.Name));
-    F.OutputOnly = Written && !Read;
-    if (!F.Live && F.Origin == FieldOrigin::Registered)
-      M.Findings.push_back({DiagId::ForceUnused, F.Pos, {F.Name}, {}});
+    FieldLiveness L;
+    L.Live = Read || Written || (F.Origin == FieldOrigin::Builtin && isAlwaysOutput(F.Name));
+    L.OutputOnly = Written && !Read;
+    if (!L.Live && F.Origin == FieldOrigin::Registered)
+      Result.Findings.push_back({DiagId::ForceUnused, F.Pos, {F.Name}, {}});
+    Result.Fields.push_back(L);
   }
+  return Result;
 }
 
 } // namespace wash::tr

@@ -28,28 +28,29 @@ static Finding mismatch(const Field &F, const Access &A) {
   return R;
 }
 
-void resolveFields(Model &M) {
-  const unsigned Dim = M.Sim.Dimension;
-  M.Fields.clear();
+ResolvedFields resolveFields(unsigned Dim, const std::vector<ForceRegistration> &Forces,
+                             const std::vector<Kernel> &Kernels) {
+  ResolvedFields Result;
+  std::vector<Field> &Fields = Result.Fields;
   for (const std::string &Name : builtinFieldNames())
-    M.Fields.push_back(builtin(Name, Dim));
-  for (const ForceRegistration &R : M.Forces) {
+    Fields.push_back(builtin(Name, Dim));
+  for (const ForceRegistration &R : Forces) {
     Field F;
     F.Name = R.Name;
     F.Origin = FieldOrigin::Registered;
     F.Kind = R.Kind;
     F.Dim = R.Kind == ForceKind::Vector ? Dim : 1;
     F.Pos = R.Pos;
-    M.Fields.push_back(F);
+    Fields.push_back(F);
   }
 
   // Kernels are stored in registration order; init kernels run first, so
   // visit them first to find the use that creates a force at run time.
   std::vector<const Kernel *> Order;
-  for (const Kernel &K : M.Kernels)
+  for (const Kernel &K : Kernels)
     if (K.Kind == KernelKind::Init)
       Order.push_back(&K);
-  for (const Kernel &K : M.Kernels)
+  for (const Kernel &K : Kernels)
     if (K.Kind != KernelKind::Init)
       Order.push_back(&K);
 
@@ -58,18 +59,19 @@ void resolveFields(Model &M) {
     for (const Access &A : K->Accesses) {
       if (!A.Kind)
         continue;
-      auto It = std::find_if(M.Fields.begin(), M.Fields.end(), [&](const Field &F) {
+      auto It = std::find_if(Fields.begin(), Fields.end(), [&](const Field &F) {
         return F.Origin != FieldOrigin::Builtin && F.Name == A.Field;
       });
-      if (It == M.Fields.end()) {
+      if (It == Fields.end()) {
         Field F;
         F.Name = A.Field;
         F.Origin = FieldOrigin::Created;
         F.Kind = *A.Kind;
         F.Dim = F.Kind == ForceKind::Vector ? Dim : 1;
         F.Pos = A.Pos;
-        M.Fields.push_back(F);
-        M.Findings.push_back({DiagId::ForceCreated, A.Pos, {F.Name, forceKindName(F.Kind)}, {}});
+        Fields.push_back(F);
+        Result.Findings.push_back(
+            {DiagId::ForceCreated, A.Pos, {F.Name, forceKindName(F.Kind)}, {}});
         continue;
       }
       // The same helper may be reached from several kernels: report a
@@ -77,10 +79,11 @@ void resolveFields(Model &M) {
       if (It->Kind != *A.Kind &&
           std::find(Reported.begin(), Reported.end(), A.Pos) == Reported.end()) {
         Reported.push_back(A.Pos);
-        M.Findings.push_back(mismatch(*It, A));
+        Result.Findings.push_back(mismatch(*It, A));
       }
     }
   }
+  return Result;
 }
 
 } // namespace wash::tr

@@ -3,22 +3,25 @@
 
 namespace wash::tr {
 
-void summariseAccesses(Model &M) {
-  for (Kernel &K : M.Kernels) {
-    K.OwnReads.clear();
-    K.OwnWrites.clear();
-    K.NeighbourReads.clear();
+std::vector<AccessSets> summariseAccesses(const std::vector<Kernel> &Kernels,
+                                          bool SearchesBySmoothingLength) {
+  std::vector<AccessSets> Result;
+  Result.reserve(Kernels.size());
+  for (const Kernel &K : Kernels) {
+    AccessSets S;
     for (const Access &A : K.Accesses) {
       if (A.On == Target::Own)
-        (A.How == Mode::Read ? K.OwnReads : K.OwnWrites).insert(A.Field);
+        (A.How == Mode::Read ? S.OwnReads : S.OwnWrites).insert(A.Field);
       else if (A.How == Mode::Read)
-        K.NeighbourReads.insert(A.Field);
+        S.NeighbourReads.insert(A.Field);
       // Neighbour writes are rejected by the frontend and never recorded.
     }
     // Under the smoothing-length rule the search reads h_i for each particle.
-    if (K.Kind == KernelKind::Force && M.searchesBySmoothingLength())
-      K.OwnReads.insert("smoothing_length");
+    if (K.Kind == KernelKind::Force && SearchesBySmoothingLength)
+      S.OwnReads.insert("smoothing_length");
+    Result.push_back(std::move(S));
   }
+  return Result;
 }
 
 } // namespace wash::tr

@@ -3,30 +3,32 @@
 
 namespace wash::tr {
 
-void planHalos(Model &M) {
+std::vector<KernelHalo> planHalos(const std::vector<Kernel> &Kernels,
+                                  const std::vector<SearchGroup> &Searches) {
+  std::vector<KernelHalo> Result(Kernels.size());
   // Fields whose halo copies are current, walking one iteration in order.
   // Every iteration starts a new search, so one walk gives the steady state.
   FieldSet Current;
-  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
-    Kernel &K = M.Kernels[I];
-    K.HaloFields.clear();
-    K.HaloSends.clear();
+  for (unsigned I = 0; I < Kernels.size(); ++I) {
+    const Kernel &K = Kernels[I];
+    KernelHalo &H = Result[I];
     if (K.Kind == KernelKind::Init)
       continue;
     if (K.Kind == KernelKind::Force) {
-      K.HaloFields = K.NeighbourReads;
-      K.HaloFields.insert("pos");
-      bool Rebuild = K.SearchGroup < 0 || M.Searches.at(K.SearchGroup).Kernels.front() == I;
+      H.Fields = K.NeighbourReads;
+      H.Fields.insert("pos");
+      bool Rebuild = K.SearchGroup < 0 || Searches.at(K.SearchGroup).Kernels.front() == I;
       if (Rebuild)
         Current.clear();
-      for (const std::string &F : K.HaloFields)
+      for (const std::string &F : H.Fields)
         if (!Current.count(F))
-          K.HaloSends.insert(F);
-      Current.insert(K.HaloSends.begin(), K.HaloSends.end());
+          H.Sends.insert(F);
+      Current.insert(H.Sends.begin(), H.Sends.end());
     }
     for (const std::string &F : K.OwnWrites)
       Current.erase(F);
   }
+  return Result;
 }
 
 } // namespace wash::tr

@@ -5,12 +5,15 @@
 
 namespace wash::tr {
 
-void planNeighbourDistances(Model &M) {
-  const bool ForceWritesPos = std::any_of(M.Kernels.begin(), M.Kernels.end(), [](const Kernel &K) {
+std::vector<DistanceUse> planNeighbourDistances(const std::vector<DistanceUse> &Found,
+                                                const Settings &Sim,
+                                                const std::vector<Kernel> &Kernels) {
+  const bool ForceWritesPos = std::any_of(Kernels.begin(), Kernels.end(), [](const Kernel &K) {
     return K.Kind == KernelKind::Force && K.OwnWrites.count("pos");
   });
-  if (M.Sim.Precision != "double" || M.searchesBySmoothingLength() || ForceWritesPos)
-    M.Distances.clear();
+  if (Sim.Precision != "double" || Sim.searchesBySmoothingLength() || ForceWritesPos)
+    return {};
+  return Found;
 }
 
 } // namespace wash::tr

@@ -4,11 +4,11 @@
 namespace wash::tr {
 
 /// Fields whose old values nothing reads after a search before kernel First.
-static FieldSet rewrittenAfter(const Model &M, unsigned First) {
+static FieldSet rewrittenAfter(const std::vector<Kernel> &Kernels, unsigned First) {
   FieldSet Rewritten, Read;
   // Up to the end of the iteration: its last kernel is followed by output.
-  for (unsigned I = First; I < M.Kernels.size(); ++I) {
-    const Kernel &K = M.Kernels[I];
+  for (unsigned I = First; I < Kernels.size(); ++I) {
+    const Kernel &K = Kernels[I];
     Read.insert(K.OwnReads.begin(), K.OwnReads.end());
     Read.insert(K.NeighbourReads.begin(), K.NeighbourReads.end());
     for (const std::string &F : K.AlwaysWrites)
@@ -18,22 +18,24 @@ static FieldSet rewrittenAfter(const Model &M, unsigned First) {
   return Rewritten;
 }
 
-void planSearchReorder(Model &M) {
-  M.RewrittenAfterSearch.clear();
-  for (unsigned G = 0; G < M.Searches.size(); ++G) {
-    FieldSet Here = rewrittenAfter(M, M.Searches[G].Kernels.front());
+FieldSet planSearchReorder(const std::vector<Kernel> &Kernels,
+                           const std::vector<SearchGroup> &Searches) {
+  FieldSet Result;
+  for (unsigned G = 0; G < Searches.size(); ++G) {
+    FieldSet Here = rewrittenAfter(Kernels, Searches[G].Kernels.front());
     if (G == 0) {
-      M.RewrittenAfterSearch = Here;
+      Result = Here;
       continue;
     }
     FieldSet Both;
-    for (const std::string &F : M.RewrittenAfterSearch)
+    for (const std::string &F : Result)
       if (Here.count(F))
         Both.insert(F);
-    M.RewrittenAfterSearch = Both;
+    Result = Both;
   }
   for (const char *Moved : {"pos", "smoothing_length", "id"})
-    M.RewrittenAfterSearch.erase(Moved);
+    Result.erase(Moved);
+  return Result;
 }
 
 } // namespace wash::tr

@@ -36,6 +36,8 @@ struct Settings {
   std::vector<SettingValue> SimulationNames;
   std::vector<SettingValue> OutputFileNames;
   bool CallsStart = false;
+
+  bool searchesBySmoothingLength() const { return SmoothingLengthSupport.has_value(); }
 };
 
 enum class ForceKind { Scalar, Vector };
@@ -80,16 +82,16 @@ struct Kernel {
   // Reduction kernels: "sum", "min" or "max", and the variable it sets.
   std::string ReduceOp, Variable;
 
-  // Filled by summariseAccesses.
+  // From summariseAccesses.
   FieldSet OwnReads, OwnWrites, NeighbourReads;
   // Filled by findAlwaysWrites (update and force kernels): own fields set on
   // every path through the kernel.
   FieldSet AlwaysWrites;
-  // Filled by findHazards: own writes also read through neighbours.
+  // From findHazards: own writes also read through neighbours.
   FieldSet Hazards;
-  // Filled by planNeighbourSearch (force kernels only).
+  // From planNeighbourSearch (force kernels only).
   int SearchGroup = -1;
-  // Filled by planHalos (force kernels only): fields halo particles need, and
+  // From planHalos (force kernels only): fields halo particles need, and
   // those that must be sent before this kernel (the rest are still current).
   FieldSet HaloFields, HaloSends;
 };
@@ -103,7 +105,7 @@ struct Field {
   unsigned Dim = 1;
   bool ReadOnly = false; ///< id: no setter.
   SourcePos Pos;         ///< Registration or first use.
-  // Filled by computeLiveness.
+  // From computeLiveness.
   bool Live = false;
   bool OutputOnly = false; ///< Written, never read: stored only for output.
 };
@@ -148,7 +150,7 @@ struct Model {
 
   const Field *findField(const std::string &Name) const;
   bool hasErrors() const;
-  bool searchesBySmoothingLength() const { return Sim.SmoothingLengthSupport.has_value(); }
+  bool searchesBySmoothingLength() const { return Sim.searchesBySmoothingLength(); }
   /// Once planned: the neighbour search keeps distances for the uses left.
   bool searchKeepsDistances() const { return !Distances.empty(); }
 };

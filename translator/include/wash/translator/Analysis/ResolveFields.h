@@ -3,13 +3,23 @@
 
 #include "wash/translator/Model.h"
 
+#include <vector>
+
 namespace wash::tr {
 
-/// Builds Model::Fields: the built-in properties, the registered forces in
-/// registration order, then forces that kernels use without registering them,
-/// in order of first use (init kernels first, as the runtime creates them).
-/// Reports ForceCreated for each of those at its first use and
-/// ForceKindMismatch where a scalar accessor meets a vector force or the reverse.
-void resolveFields(Model &M);
+struct ResolvedFields {
+  std::vector<Field> Fields;     ///< Model::Fields, liveness not yet computed.
+  std::vector<Finding> Findings; ///< ForceCreated and ForceKindMismatch.
+};
+
+/// The fields the simulation stores: the built-in properties, the registered
+/// forces (Forces) in registration order, then forces that kernels use
+/// without registering them, in order of first use in the kernels' raw
+/// Accesses (init kernels first, as the runtime creates them). Vectors have
+/// Dim components. Reports ForceCreated for each of those at its first
+/// use and ForceKindMismatch where a scalar accessor meets a vector force or
+/// the reverse.
+ResolvedFields resolveFields(unsigned Dim, const std::vector<ForceRegistration> &Forces,
+                             const std::vector<Kernel> &Kernels);
 
 } // namespace wash::tr

@@ -3,10 +3,19 @@
 
 #include "wash/translator/Model.h"
 
+#include <vector>
+
 namespace wash::tr {
 
-/// Fills OwnReads, OwnWrites and NeighbourReads of every kernel from its raw
-/// accesses.
-void summariseAccesses(Model &M);
+/// Kernel::OwnReads, OwnWrites and NeighbourReads of one kernel.
+struct AccessSets {
+  FieldSet OwnReads, OwnWrites, NeighbourReads;
+};
+
+/// The access sets of each kernel, in order, from its Kind and raw Accesses.
+/// SearchesBySmoothingLength (Model::searchesBySmoothingLength): every force
+/// kernel's search reads its particle's smoothing length.
+std::vector<AccessSets> summariseAccesses(const std::vector<Kernel> &Kernels,
+                                          bool SearchesBySmoothingLength);
 
 } // namespace wash::tr

@@ -3,6 +3,8 @@
 
 #include "wash/translator/Model.h"
 
+#include <vector>
+
 namespace wash::tr {
 
 /// A search sorts the particles, and every column is reordered with them,
@@ -10,9 +12,11 @@ namespace wash::tr {
 /// same iteration sets it on every path (Kernel::AlwaysWrites) and no kernel
 /// from the search up to and including that one reads it, on its particle or
 /// through neighbours. The search itself reads pos (and smoothing_length),
-/// the output reads id: those always move. Fills Model::RewrittenAfterSearch,
-/// the fields for which that holds after every search. Needs
-/// summariseAccesses, findAlwaysWrites and planNeighbourSearch.
-void planSearchReorder(Model &M);
+/// the output reads id: those always move. Returns
+/// Model::RewrittenAfterSearch, the fields for which that holds after every
+/// search in Searches (planNeighbourSearch). Reads the kernels' OwnReads and
+/// NeighbourReads (summariseAccesses) and AlwaysWrites (findAlwaysWrites).
+FieldSet planSearchReorder(const std::vector<Kernel> &Kernels,
+                           const std::vector<SearchGroup> &Searches);
 
 } // namespace wash::tr
