@@ -5,16 +5,6 @@
 
 namespace wash::backend {
 
-Settings &settings() {
-  static Settings s;
-  return s;
-}
-
-detail::RunOptions &programOptions() {
-  static detail::RunOptions o;
-  return o;
-}
-
 Run::Run(const Translation &translated, bool writes)
     : backend_(translated.backend), dimensions_(translated.dimensions),
       useFloat_(translated.floatStorage), writes_(writes) {
@@ -42,8 +32,7 @@ Run::Run(const Translation &translated, bool writes)
   if (std::string bad = detail::checkBox(s.box, dimensions, radius_); !bad.empty())
     throw detail::RunError(bad);
   if (writes_)
-    output_ = std::make_unique<detail::RunOutput>(o, s.outputFileName.empty() ? s.simulationName
-                                                                              : s.outputFileName);
+    output_ = std::make_unique<detail::RunOutput>(o, s.outputBaseName());
 }
 
 bool Run::frameDue(std::uint64_t step) const {

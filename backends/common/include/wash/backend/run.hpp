@@ -13,6 +13,7 @@
 #include <wash/detail/options.hpp>
 #include <wash/detail/progress.hpp>
 #include <wash/detail/run_output.hpp>
+#include <wash/detail/run_settings.hpp>
 #include <wash/detail/search.hpp>
 #include <wash/vec.hpp>
 
@@ -25,20 +26,11 @@
 
 namespace wash::backend {
 
-/// What the simulation's main configured through wash/settings.hpp.
-struct Settings {
-  std::optional<bool> useFloat;
-  detail::SearchRule search;
-  std::string simulationName = "wash";
-  std::string outputFileName;
-  std::optional<std::uint64_t> maxIterations;
-  detail::Box box;
-  int dimensions = 0;         ///< set by the generated program before main runs
-  bool stopRequested = false; ///< by wash::stop() in a void kernel
-};
-Settings &settings();
-/// The program options __wrap_main found.
-detail::RunOptions &programOptions();
+/// What the simulation's main configured: the store every runtime shares.
+using Settings = detail::RunSettings;
+/// Generated storage headers set settings().dimensions in a static initialiser.
+inline Settings &settings() { return detail::runSettings(); }
+using detail::programOptions;
 
 /// Whether every component of a value is finite. The generated particle loops
 /// test what each kernel wrote right after it ran, while the values are still
