@@ -160,6 +160,21 @@ TEST_F(ReferenceTest, NonFiniteStateStopsTheRunNamingStepKernelAndField) {
 // The shared settings know this build's dimension before main runs.
 TEST(ReferenceSettings, TheDimensionIsWashDim) { EXPECT_EQ(runSettings().dimensions, WASH_DIM); }
 
+TEST_F(ReferenceTest, HeaderAndSummaryLinesAreTheSharedRunsWithItsName) {
+  programOptions().quiet = false;
+  set_simulation_name("lines");
+  add_init_kernel(&threeInALine);
+  testing::internal::CaptureStdout();
+  start();
+  std::string text = testing::internal::GetCapturedStdout();
+  EXPECT_TRUE(text.starts_with("wash reference: 'lines', 3 particles, " + std::to_string(WASH_DIM) +
+                               "D, double, influence radius 0.6, 1 steps\n"
+                               "wash: 1 steps of 3 particles in "))
+      << text;
+  EXPECT_NE(text.find(" ns per particle-step; output in " + out.string() + "\n"), std::string::npos)
+      << text;
+}
+
 TEST_F(ReferenceTest, StopOutsideAVoidKernelIsAnError) {
   EXPECT_THROW(stop(), detail::UsageError);
   EXPECT_FALSE(runSettings().stopRequested);

@@ -3,19 +3,16 @@
 // The definition of what a wash program computes: init kernels once, then each
 // iteration every kernel in registration order, one particle at a time. A force
 // kernel's neighbours are handles into a snapshot taken when the kernel starts,
-// listed in the canonical order of neighbour_search.hpp.
+// listed in the canonical order of neighbour_search.hpp. The set-up, output
+// and checks around the kernels are every runtime's (wash/detail/run.hpp).
 //
 //===----------------------------------------------------------------------===//
 #include "state.hpp"
 
 #include <wash/detail/neighbour_search.hpp>
-#include <wash/detail/progress.hpp>
 #include <wash/detail/reduction.hpp>
-#include <wash/detail/run_settings.hpp>
+#include <wash/detail/run.hpp>
 #include <wash/detail/search.hpp>
-
-#include <cstdio>
-#include <iostream>
 
 namespace wash {
 
@@ -117,12 +114,6 @@ void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
   wrapPositions(s, runSettings().box);
 }
 
-void checkFinite(const detail::State &s, std::uint64_t step, const Kernel &k) {
-  std::string bad = detail::findNonFinite(s.frame(s.particles));
-  if (!bad.empty())
-    throw RunError("step " + std::to_string(step) + ": after kernel '" + k.name + "': " + bad);
-}
-
 } // namespace
 
 // Unlike generated programs' (where the translator checks it), this one
@@ -135,58 +126,31 @@ void stop(std::source_location loc) {
 
 void start() {
   auto &s = state();
-  const detail::RunSettings &settings = runSettings();
-  const detail::RunOptions &options = detail::programOptions();
   if (s.started)
     throw RunError("start() was called twice");
   s.started = true;
-  if (std::string bad = settings.search.check(); !bad.empty())
-    throw RunError(bad);
-  std::uint64_t steps = options.steps ? *options.steps : settings.maxIterations.value_or(0);
-  if (!options.steps && !settings.maxIterations)
-    throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
-  if (std::string bad =
-          detail::checkBox(settings.box, dimensions, settings.search.radius.value_or(0.0));
-      !bad.empty())
-    throw RunError(bad);
-  detail::RunOutput output(options, settings.outputBaseName());
-
+  // Not translated: whatever precision and neighbour rule main asked for.
+  detail::Run run(detail::Translation{.backend = "reference",
+                                      .dimensions = dimensions,
+                                      .floatStorage = std::nullopt,
+                                      .smoothingLengthSearch = std::nullopt},
+                  /*writes=*/true);
+  auto frame = [&s] { return s.frame(s.particles); };
   for (const Kernel &k : s.kernels)
     if (k.kind == Kernel::Init) {
       runKernel(k, s, 0);
-      checkFinite(s, 0, k);
+      run.checkFinite(frame(), 0, k.name);
     }
-  const bool talk = !options.quiet;
-  if (talk)
-    std::printf("wash reference: '%s', %zu particles, %dD, %s, %s, %llu steps\n",
-                settings.simulationName.c_str(), s.particles.size(), dimensions,
-                settings.useFloat.value_or(false) ? "float" : "double",
-                settings.search.describe().c_str(), (unsigned long long)steps);
-  std::fflush(stdout);
-  if (output.frameDue(0, steps))
-    output.writeFrame(0, s.frame(s.particles));
-
-  detail::Progress progress(steps, s.particles.size(), talk);
-  for (std::uint64_t step = 1; step <= steps; ++step) {
+  run.begin(s.particles.size(), frame);
+  for (std::uint64_t step = 1; step <= run.steps(); ++step) {
     for (const Kernel &k : s.kernels)
       if (k.kind != Kernel::Init) {
         runKernel(k, s, step);
-        checkFinite(s, step, k);
+        run.checkFinite(frame(), step, k.name);
       }
-    if (settings.stopRequested)
-      steps = step; // this step is the last: written as such
-    if (output.frameDue(step, steps))
-      output.writeFrame(step, s.frame(s.particles));
-    progress.update(step);
+    run.endStep(step, frame); // after wash::stop(), run.steps() is this step
   }
-  double seconds = progress.finish();
-  output.finish(s.frame(s.particles));
-  if (talk)
-    std::printf(
-        "wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); output in %s\n",
-        (unsigned long long)steps, s.particles.size(), seconds,
-        seconds > 0 ? double(steps) * double(s.particles.size()) / seconds : 0.0,
-        output.directory().c_str());
+  run.finish(frame());
 }
 
 } // namespace wash
