@@ -18,9 +18,9 @@
 # spawn order), which 20 steps at 1M particles would otherwise count at a
 # twentieth:
 #   (own(S) * S - own(B) * B) / (S - B)
-# each the minimum of --repeat runs. For a program that prints none (the
-# reference build) it is the wall time of the whole process (date +%s%N
-# around it, minimum of --repeat runs):
+# each the minimum of --repeat runs. For a program that prints none (a
+# reference build older than the shared run set-up) it is the wall time of
+# the whole process (date +%s%N around it, minimum of --repeat runs):
 #   (wall(S steps) - wall(B steps)) / (N * (S - B))
 # (B = 0 there would leave in the difference between writing the final frame
 # after steps, 17 significant digits a value, and after none, mostly "0": at

@@ -134,8 +134,8 @@ std::vector<double> bordersAndMore(double size, std::mt19937_64 &rng) {
 } // namespace
 
 // The grid finds cells by multiplying with the inverse cell size; it must
-// still give floor(x / size) exactly, the reference's cell, on and around
-// every cell border, where the product and the quotient round apart.
+// still give floor(x / size) exactly, the canonical cell (cellCoordinate), on
+// and around every cell border, where the product and the quotient round apart.
 TEST(CellGrid, CellCoordinateIsTheQuotientFloored) {
   std::mt19937_64 rng(7);
   std::size_t checked = 0;
@@ -144,7 +144,7 @@ TEST(CellGrid, CellCoordinateIsTheQuotientFloored) {
     std::vector<double> xs = bordersAndMore(size, rng);
     xs.insert(xs.end(), {0.0, -0.0, 1e-320, -1e-320, 1e15, -1e15, 4.5e15 * size});
     for (double x : xs) {
-      ASSERT_EQ(grid.coordinate(x), static_cast<std::int64_t>(std::floor(x / size)))
+      ASSERT_EQ(grid.coordinate(x), wash::detail::cellCoordinate(x, size))
           << "x = " << x << ", cell size " << size;
       ++checked;
     }
@@ -166,8 +166,8 @@ TEST(CellGrid, NeighbourCellsAreThoseOfTheIntervalsEnds) {
         continue;
       }
       ++fast;
-      ASSERT_EQ(first, static_cast<std::int64_t>(std::floor((x - size) / size))) << "x = " << x;
-      ASSERT_EQ(last, static_cast<std::int64_t>(std::floor((x + size) / size))) << "x = " << x;
+      ASSERT_EQ(first, wash::detail::cellCoordinate(x - size, size)) << "x = " << x;
+      ASSERT_EQ(last, wash::detail::cellCoordinate(x + size, size)) << "x = " << x;
     }
     std::int64_t first, last;
     EXPECT_FALSE(grid.neighbourCells(0.5 * size, 0.5 * size, first, last)) << "another radius";

@@ -100,6 +100,14 @@ TEST(MpiDomain, CrowdedCellsWeighMoreThanLoneParticles) {
     EXPECT_LT(keptOwn(domain, keys), 450u);
 }
 
+// The domain's cells are the canonical ones (wash/detail/cell.hpp): 0.3 / 0.1
+// rounds below 3, so 0.3 lies in cell 2.
+TEST(MpiDomain, CellsAreTheCanonicalCells) {
+  Domain<2> domain;
+  domain.setCellSize(0.1);
+  EXPECT_EQ(domain.cellOf({0.3, -0.05}), (Domain<2>::Cell{2, -1}));
+}
+
 } // namespace
 
 int main(int argc, char **argv) {

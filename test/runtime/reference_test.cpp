@@ -3,6 +3,7 @@
 #include "state.hpp"
 
 #include <wash/detail/reduction.hpp>
+#include <wash/detail/run_settings.hpp>
 #include <wash/detail/variables.hpp>
 #include <wash/wash.hpp>
 
@@ -13,6 +14,8 @@
 #include <unistd.h>
 
 using namespace wash;
+using detail::programOptions;
+using detail::runSettings;
 using detail::state;
 
 namespace {
@@ -32,9 +35,8 @@ struct ReferenceTest : ::testing::Test {
        ::testing::UnitTest::GetInstance()->current_test_info()->name());
   void SetUp() override {
     state() = detail::State{};
-    state().options.quiet = true;
-    state().options.outDir = out.string();
-    state().options.steps = 1;
+    runSettings() = {.dimensions = runSettings().dimensions}; // WASH_DIM, set before main
+    programOptions() = {.steps = 1, .outDir = out.string(), .quiet = true};
     set_influence_radius(0.6);
   }
   void TearDown() override { std::filesystem::remove_all(out); }
@@ -141,8 +143,10 @@ TEST_F(ReferenceTest, FloatPrecisionRoundsEveryStoredValue) {
 
 TEST_F(ReferenceTest, NonFiniteStateStopsTheRunNamingStepKernelAndField) {
   add_init_kernel(&threeInALine);
-  add_update_kernel([](Particle &p) { p.set_density(p.get_density() / (p.get_id() == 1 ? 0.0 : 1.0) - 1.0 / 0.0 ); });
-  state().options.steps = 3;
+  add_update_kernel([](Particle &p) {
+    p.set_density(p.get_density() / (p.get_id() == 1 ? 0.0 : 1.0) - 1.0 / 0.0);
+  });
+  programOptions().steps = 3;
   try {
     start();
     FAIL() << "no error";
@@ -151,6 +155,38 @@ TEST_F(ReferenceTest, NonFiniteStateStopsTheRunNamingStepKernelAndField) {
     EXPECT_NE(msg.find("step 1: after kernel '"), std::string::npos) << msg;
     EXPECT_NE(msg.find("field 'density' of particle 0 is -inf"), std::string::npos) << msg;
   }
+}
+
+// The shared settings know this build's dimension before main runs.
+TEST(ReferenceSettings, TheDimensionIsWashDim) { EXPECT_EQ(runSettings().dimensions, WASH_DIM); }
+
+TEST_F(ReferenceTest, HeaderAndSummaryLinesAreTheSharedRunsWithItsName) {
+  programOptions().quiet = false;
+  set_simulation_name("lines");
+  add_init_kernel(&threeInALine);
+  testing::internal::CaptureStdout();
+  start();
+  std::string text = testing::internal::GetCapturedStdout();
+  EXPECT_TRUE(text.starts_with("wash reference: 'lines', 3 particles, " + std::to_string(WASH_DIM) +
+                               "D, double, influence radius 0.6, 1 steps\n"
+                               "wash: 1 steps of 3 particles in "))
+      << text;
+  EXPECT_NE(text.find(" ns per particle-step; output in " + out.string() + "\n"), std::string::npos)
+      << text;
+}
+
+TEST_F(ReferenceTest, StopOutsideAVoidKernelIsAnError) {
+  EXPECT_THROW(stop(), detail::UsageError);
+  EXPECT_FALSE(runSettings().stopRequested);
+}
+
+TEST_F(ReferenceTest, StopMakesThisIterationTheLast) {
+  programOptions().steps = 5;
+  add_init_kernel(&threeInALine);
+  add_void_kernel([] { stop(); });
+  add_update_kernel([](Particle &p) { p.set_density(p.get_density() + 1.0); });
+  start();
+  EXPECT_EQ(state().particles.density[0], 2.0); // 1, then one iteration
 }
 
 TEST_F(ReferenceTest, CreatingParticlesOutsideInitKernelsIsAnError) {
@@ -204,7 +240,7 @@ TEST_F(ReferenceTest, VoidKernelsRunOncePerIterationInOrderAndSetVariables) {
   add_init_kernel(&threeInALine);
   add_void_kernel([] { set_variable("ticks", get_variable("ticks") + 1.0); });
   add_update_kernel([](Particle &p) { p.set_density(get_variable("ticks")); });
-  state().options.steps = 3;
+  programOptions().steps = 3;
   start();
   EXPECT_EQ(get_variable("ticks"), 3.0);
   EXPECT_EQ(state().particles.density[2], 3.0); // the update after the void kernel saw it

@@ -3,12 +3,9 @@
 // Generated programs link with -Wl,--wrap=main, as reference programs do.
 //
 //===----------------------------------------------------------------------===//
-#include <wash/backend/run.hpp>
 #include <wash/detail/entry.hpp>
 
 extern "C" int __real_main(int argc, char **argv);
 extern "C" int __wrap_main(int argc, char **argv) {
-  return wash::detail::runProgram(
-      argc, argv, [](const wash::detail::RunOptions &o) { wash::backend::programOptions() = o; },
-      &__real_main);
+  return wash::detail::runProgram(argc, argv, &__real_main);
 }

@@ -6,7 +6,6 @@
 // output: the simulation's own prints and the run summary appear once.
 //
 //===----------------------------------------------------------------------===//
-#include <wash/backend/run.hpp>
 #include <wash/detail/entry.hpp>
 #include <wash/mpi/comm.hpp>
 
@@ -21,9 +20,7 @@ extern "C" int __wrap_main(int argc, char **argv) {
   if (wash::mpi::rank() != 0 && !std::freopen("/dev/null", "w", stdout))
     std::fprintf(stderr, "wash mpi: rank %d could not silence its standard output\n",
                  wash::mpi::rank());
-  int status = wash::detail::runProgram(
-      argc, argv, [](const wash::detail::RunOptions &o) { wash::backend::programOptions() = o; },
-      &__real_main);
+  int status = wash::detail::runProgram(argc, argv, &__real_main);
   std::fflush(stdout);
   if (status != 0 && wash::mpi::ranks() > 1)
     MPI_Abort(MPI_COMM_WORLD, status);

@@ -1,13 +1,13 @@
 #include <wash/detail/entry.hpp>
 #include <wash/detail/run_output.hpp>
+#include <wash/detail/run_settings.hpp>
 
 #include <cstdio>
 #include <string>
 
 namespace wash::detail {
 
-int runProgram(int argc, char **argv, void (*takeOptions)(const RunOptions &),
-               int (*simulationMain)(int, char **)) {
+int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
   std::string program = argc > 0 ? argv[0] : "wash";
   try {
     ParsedArgs parsed = parseProgramOptions(argc, argv);
@@ -15,7 +15,7 @@ int runProgram(int argc, char **argv, void (*takeOptions)(const RunOptions &),
       std::fputs(usageText(program).c_str(), stdout);
       return 0;
     }
-    takeOptions(parsed.options);
+    programOptions() = parsed.options;
     return simulationMain(int(parsed.userArgv.size()) - 1, parsed.userArgv.data());
   } catch (const OptionError &e) {
     std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());

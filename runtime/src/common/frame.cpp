@@ -10,7 +10,8 @@ namespace wash::detail {
 std::vector<std::size_t> Frame::orderById() const {
   std::vector<std::size_t> order(ids.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
   return order;
 }
 
@@ -35,14 +36,16 @@ std::string findNonFinite(const Frame &frame) {
     for (std::size_t k = 0; k < column.values.size(); ++k) {
       if (std::isfinite(column.values[k]))
         continue;
-      std::ostringstream msg;
-      std::size_t row = k / column.components;
-      msg << "field '" << column.name << "' of particle " << frame.ids[row] << " is "
-          << column.values[k];
-      return msg.str();
+      return nonFiniteMessage(column.name, frame.ids[k / column.components], column.values[k]);
     }
   }
   return "";
+}
+
+std::string nonFiniteMessage(const std::string &field, std::uint64_t id, double value) {
+  std::ostringstream msg;
+  msg << "field '" << field << "' of particle " << id << " is " << value;
+  return msg.str();
 }
 
 } // namespace wash::detail

@@ -1,10 +1,13 @@
-//===- api.cpp - settings and registration calls of the reference runtime ===//
+//===- api.cpp - registration calls of the reference runtime ------------===//
+//
+// The settings calls are every runtime's (src/common/run_settings.cpp).
+//
+//===----------------------------------------------------------------------===//
 #include "state.hpp"
 
 #include <cxxabi.h>
 #include <dlfcn.h>
 
-#include <cmath>
 #include <cstdlib>
 #include <memory>
 
@@ -33,42 +36,12 @@ void addKernel(detail::Kernel::Kind kind, void *function, const char *kindName) 
     throw detail::RunError(std::string("a null ") + kindName + " kernel was registered");
   if (state().started)
     throw detail::RunError(std::string("a ") + kindName + " kernel was registered after start()");
-  std::string fallback = std::string(kindName) + " kernel #" +
-                         std::to_string(state().kernels.size() + 1);
+  std::string fallback =
+      std::string(kindName) + " kernel #" + std::to_string(state().kernels.size() + 1);
   state().kernels.push_back({kind, function, symbolName(function, fallback.c_str())});
 }
 
 } // namespace
-
-void set_precision(const std::string &precision, std::source_location loc) {
-  if (precision != "double" && precision != "float")
-    usageError(loc, "precision must be \"double\" or \"float\", not \"" + precision + "\"");
-  state().useFloat = precision == "float";
-}
-
-void set_influence_radius(double radius, std::source_location loc) {
-  if (!(radius > 0.0) || !std::isfinite(radius))
-    usageError(loc, "influence radius must be a positive number");
-  state().search.radius = radius;
-}
-
-void set_smoothing_length_support(double support, std::source_location loc) {
-  if (!(support > 0.0) || !std::isfinite(support))
-    usageError(loc, "the support radius must be a positive multiple of h");
-  state().search.support = support;
-}
-
-void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
-                      const std::vector<bool> &periodic, std::source_location loc) {
-  auto &box = state().box;
-  if (!detail::setBox(box, dimensions, lo, hi, periodic))
-    usageError(loc, "set_bounding_box needs " + std::to_string(dimensions) +
-                        " values for lo, hi and periodic, with hi > lo on every axis");
-}
-
-void set_simulation_name(const std::string &name) { state().simulationName = name; }
-void set_output_file_name(const std::string &name) { state().outputFileName = name; }
-void set_max_iterations(std::uint64_t iterations) { state().maxIterations = iterations; }
 
 void add_force(const std::string &name, int dim, std::source_location loc) {
   if (dim != 1 && dim != dimensions)

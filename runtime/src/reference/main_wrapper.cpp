@@ -4,13 +4,9 @@
 // Kept apart from the runtime so that unit tests can link the runtime alone.
 //
 //===----------------------------------------------------------------------===//
-#include "state.hpp"
-
 #include <wash/detail/entry.hpp>
 
 extern "C" int __real_main(int argc, char **argv);
 extern "C" int __wrap_main(int argc, char **argv) {
-  return wash::detail::runProgram(
-      argc, argv, [](const wash::detail::RunOptions &o) { wash::detail::state().options = o; },
-      &__real_main);
+  return wash::detail::runProgram(argc, argv, &__real_main);
 }

@@ -3,23 +3,22 @@
 // The definition of what a wash program computes: init kernels once, then each
 // iteration every kernel in registration order, one particle at a time. A force
 // kernel's neighbours are handles into a snapshot taken when the kernel starts,
-// listed in the canonical order of neighbour_search.hpp.
+// listed in the canonical order of neighbour_search.hpp. The set-up, output
+// and checks around the kernels are every runtime's (wash/detail/run.hpp).
 //
 //===----------------------------------------------------------------------===//
 #include "state.hpp"
 
 #include <wash/detail/neighbour_search.hpp>
-#include <wash/detail/progress.hpp>
 #include <wash/detail/reduction.hpp>
+#include <wash/detail/run.hpp>
 #include <wash/detail/search.hpp>
-
-#include <cstdio>
-#include <iostream>
 
 namespace wash {
 
 using detail::Kernel;
 using detail::RunError;
+using detail::runSettings;
 using detail::state;
 
 namespace {
@@ -48,9 +47,8 @@ double cellSize(const detail::SearchRule &rule, const detail::ParticleStore &sna
   return largest > 0.0 ? largest : 1.0; // any cell size finds coincident particles
 }
 
-void runForceKernel(ForceKernel kernel, detail::ParticleStore &live,
-                    const detail::SearchRule &rule, const detail::Box &box,
-                    const std::string &where) {
+void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, const detail::SearchRule &rule,
+                    const detail::Box &box, const std::string &where) {
   detail::ParticleStore snapshot = live;
   detail::CellList<dimensions> cells;
   cells.build(snapshot.pos, snapshot.id, cellSize(rule, snapshot, box, where));
@@ -73,13 +71,13 @@ void runForceKernel(ForceKernel kernel, detail::ParticleStore &live,
 }
 
 /// On periodic axes, positions wrap into the box after every kernel.
-void wrapPositions(detail::State &s) {
-  if (!s.box.anyPeriodic())
+void wrapPositions(detail::State &s, const detail::Box &box) {
+  if (!box.anyPeriodic())
     return;
   for (ParticleVec &p : s.particles.pos)
     for (int a = 0; a < dimensions; ++a)
-      if (s.box.periodic[a])
-        *p[a] = s.store(s.box.wrap(p.at(a), a));
+      if (box.periodic[a])
+        *p[a] = s.store(box.wrap(p.at(a), a));
 }
 
 void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
@@ -108,25 +106,22 @@ void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
     break;
   }
   case Kernel::ForceKind:
-    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, s.search, s.box,
+    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, runSettings().search,
+                   runSettings().box,
                    "step " + std::to_string(step) + ": kernel '" + k.name + "': ");
     break;
   }
-  wrapPositions(s);
-}
-
-void checkFinite(const detail::State &s, std::uint64_t step, const Kernel &k) {
-  std::string bad = detail::findNonFinite(s.frame(s.particles));
-  if (!bad.empty())
-    throw RunError("step " + std::to_string(step) + ": after kernel '" + k.name + "': " + bad);
+  wrapPositions(s, runSettings().box);
 }
 
 } // namespace
 
+// Unlike generated programs' (where the translator checks it), this one
+// checks that it is called from a void kernel.
 void stop(std::source_location loc) {
   if (!state().inVoidKernel)
     detail::usageError(loc, "wash::stop() can only be called from a void kernel");
-  state().stopRequested = true;
+  runSettings().stopRequested = true;
 }
 
 void start() {
@@ -134,52 +129,28 @@ void start() {
   if (s.started)
     throw RunError("start() was called twice");
   s.started = true;
-  if (std::string bad = s.search.check(); !bad.empty())
-    throw RunError(bad);
-  std::uint64_t steps = s.options.steps ? *s.options.steps : s.maxIterations.value_or(0);
-  if (!s.options.steps && !s.maxIterations)
-    throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
-  if (std::string bad = detail::checkBox(s.box, dimensions, s.search.radius.value_or(0.0));
-      !bad.empty())
-    throw RunError(bad);
-  std::string base = s.outputFileName.empty() ? s.simulationName : s.outputFileName;
-  detail::RunOutput output(s.options, base);
-
+  // Not translated: whatever precision and neighbour rule main asked for.
+  detail::Run run(detail::Translation{.backend = "reference",
+                                      .dimensions = dimensions,
+                                      .floatStorage = std::nullopt,
+                                      .smoothingLengthSearch = std::nullopt},
+                  /*writes=*/true);
+  auto frame = [&s] { return s.frame(s.particles); };
   for (const Kernel &k : s.kernels)
     if (k.kind == Kernel::Init) {
       runKernel(k, s, 0);
-      checkFinite(s, 0, k);
+      run.checkFinite(frame(), 0, k.name);
     }
-  const bool talk = !s.options.quiet;
-  if (talk)
-    std::printf("wash reference: '%s', %zu particles, %dD, %s, %s, %llu steps\n",
-                s.simulationName.c_str(), s.particles.size(), dimensions,
-                s.useFloat ? "float" : "double", s.search.describe().c_str(),
-                (unsigned long long)steps);
-  std::fflush(stdout);
-  if (output.frameDue(0, steps))
-    output.writeFrame(0, s.frame(s.particles));
-
-  detail::Progress progress(steps, s.particles.size(), talk);
-  for (std::uint64_t step = 1; step <= steps; ++step) {
+  run.begin(s.particles.size(), frame);
+  for (std::uint64_t step = 1; step <= run.steps(); ++step) {
     for (const Kernel &k : s.kernels)
       if (k.kind != Kernel::Init) {
         runKernel(k, s, step);
-        checkFinite(s, step, k);
+        run.checkFinite(frame(), step, k.name);
       }
-    if (s.stopRequested)
-      steps = step; // this step is the last: written as such
-    if (output.frameDue(step, steps))
-      output.writeFrame(step, s.frame(s.particles));
-    progress.update(step);
+    run.endStep(step, frame); // after wash::stop(), run.steps() is this step
   }
-  double seconds = progress.finish();
-  output.finish(s.frame(s.particles));
-  if (talk)
-    std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); output in %s\n",
-                (unsigned long long)steps, s.particles.size(), seconds,
-                seconds > 0 ? double(steps) * double(s.particles.size()) / seconds : 0.0,
-                output.directory().c_str());
+  run.finish(frame());
 }
 
 } // namespace wash

@@ -1,8 +1,17 @@
 #include "state.hpp"
 
+#include <wash/detail/run_settings.hpp>
 #include <wash/detail/variables.hpp>
 
 #include <algorithm>
+
+// The shared settings' dimension is this build's WASH_DIM (set_bounding_box
+// checks against it), set before main runs; runSettings() is a function-local
+// static, so the order of static initialisers does not matter. Every program
+// links this object, whatever it calls: the reference library makes the
+// linker look for this symbol (runtime/CMakeLists.txt).
+extern "C" const int wash_reference_dimensions =
+    (wash::detail::runSettings().dimensions = WASH_DIM);
 
 namespace wash::detail {
 
@@ -18,7 +27,9 @@ void usageError(const std::source_location &loc, const std::string &message) {
 // Out of line on purpose: g++ 12 at -O2, inlining this into the vector
 // overload, vectorised the pair of round trips into a plain copy (the rounding
 // was lost). Kept as a call, each conversion happens.
-double State::store(double v) const { return useFloat ? double(float(v)) : v; }
+double State::store(double v) const {
+  return runSettings().useFloat.value_or(false) ? double(float(v)) : v;
+}
 
 const Force &State::force(const std::string &name, bool isVector, const std::source_location &loc) {
   for (const Force &f : forces) {

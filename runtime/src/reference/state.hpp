@@ -1,20 +1,18 @@
-//===- state.hpp - the reference runtime's particles and settings -*- C++ -*-===//
+//===- state.hpp - the reference runtime's particles and kernels -*- C++ -*-===//
 //
 // Internal to the reference runtime. Particles live in one store, column by
 // column; a Particle is (store, index), so a force kernel's neighbours are
 // handles into a snapshot copy of the store taken when the kernel starts.
+// main's settings are in the store every runtime shares (run_settings.hpp).
 //
 //===----------------------------------------------------------------------===//
 #pragma once
 
-#include <wash/detail/box.hpp>
 #include <wash/detail/frame.hpp>
 #include <wash/detail/run_output.hpp>
-#include <wash/detail/search.hpp>
 #include <wash/wash.hpp>
 
 #include <cstdint>
-#include <optional>
 #include <source_location>
 #include <string>
 #include <vector>
@@ -42,27 +40,19 @@ struct Force {
 struct Kernel {
   enum Kind { Init, Update, ForceKind, Void, ReductionKind } kind;
   void *function;
-  std::string name; ///< from the symbol table, for messages
+  std::string name;     ///< from the symbol table, for messages
   int reduceOp = 0;     ///< reduction kernels: a wash::Reduction
   std::string variable; ///< reduction kernels: where the result goes
 };
 
-/// Everything a reference run knows. One per program.
+/// What a reference run knows besides main's settings. One per program.
 struct State {
-  bool useFloat = false;
-  SearchRule search;
-  std::string simulationName = "wash";
-  std::string outputFileName;
-  std::optional<std::uint64_t> maxIterations;
-  Box box;
   std::vector<Force> forces;
   std::vector<Kernel> kernels;
   ParticleStore particles;
   bool inInitKernel = false;
   bool inVoidKernel = false;
-  bool stopRequested = false; ///< by wash::stop()
   bool started = false;
-  RunOptions options;
 
   /// Storage rounding: the stored value of v under the chosen precision.
   double store(double v) const;

@@ -35,5 +35,7 @@ std::vector<std::string> csvHeaders(const Column &column);
 
 /// Returns "" if every value is finite, else a message naming the first bad one.
 std::string findNonFinite(const Frame &frame);
+/// That message: "field 'density' of particle 7 is inf".
+std::string nonFiniteMessage(const std::string &field, std::uint64_t id, double value);
 
 } // namespace wash::detail

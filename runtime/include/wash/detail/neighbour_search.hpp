@@ -14,6 +14,7 @@
 #pragma once
 
 #include <wash/detail/box.hpp>
+#include <wash/detail/cell.hpp>
 #include <wash/vec.hpp>
 
 #include <algorithm>
@@ -24,11 +25,6 @@
 #include <vector>
 
 namespace wash::detail {
-
-/// Grid coordinate of x in a grid of cell size `cellSize` anchored at 0.
-inline std::int64_t cellCoordinate(double x, double cellSize) {
-  return static_cast<std::int64_t>(std::floor(x / cellSize));
-}
 
 /// True if b lies within radius of a (the neighbour test above).
 template <int D>

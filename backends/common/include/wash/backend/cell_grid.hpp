@@ -10,6 +10,7 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/detail/cell.hpp>
 #include <wash/vec.hpp>
 
 #include <algorithm>
@@ -170,7 +171,7 @@ public:
   }
 
   /// floor(x / radius_), the division rounded as written, then floored (the
-  /// reference's cell), mostly without dividing: x * (1 / radius_) is within
+  /// canonical cell, detail::cellCoordinate), mostly without dividing: x * (1 / radius_) is within
   /// 4e-16 relative of that quotient, so the floors agree unless the product
   /// lies within a hair of an integer, and then the division decides. (A
   /// division is the slowest step of setting up a scan.)
@@ -178,7 +179,7 @@ public:
     std::int64_t whole;
     if (clearOfIntegers(x * inverse_, 1.0, whole)) [[likely]]
       return whole;
-    return static_cast<std::int64_t>(std::floor(x / radius_));
+    return detail::cellCoordinate(x, radius_);
   }
 
 private:

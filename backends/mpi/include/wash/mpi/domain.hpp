@@ -10,6 +10,7 @@
 #pragma once
 
 #include <wash/backend/search_geometry.hpp>
+#include <wash/detail/cell.hpp>
 #include <wash/mpi/comm.hpp>
 #include <wash/vec.hpp>
 
@@ -34,7 +35,7 @@ public:
   Cell cellOf(const Vec<double, D> &p) const {
     Cell c;
     for (int a = 0; a < D; ++a)
-      c[a] = static_cast<std::int64_t>(std::floor(p.at(a) / cellSize_));
+      c[a] = wash::detail::cellCoordinate(p.at(a), cellSize_);
     return c;
   }
 
@@ -96,8 +97,8 @@ public:
     std::vector<double> weight;
     for (std::size_t s = 0; s < samples; ++s) {
       const double target = sum * double(s) / double(samples);
-      const std::size_t k = std::size_t(std::upper_bound(ahead.begin(), ahead.end(), target) -
-                                        ahead.begin()) - 1;
+      const std::size_t k =
+          std::size_t(std::upper_bound(ahead.begin(), ahead.end(), target) - ahead.begin()) - 1;
       sample.push_back(localKeys[k]);
       weight.push_back(work / double(samples));
     }

@@ -220,8 +220,8 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
   // The cells the box [p - radius, p + radius] overlaps, [from, to] per axis.
   auto stencil = [&](const Vec<double, D> &p, Cell &from, Cell &to) {
     for (int a = 0; a < D; ++a) {
-      from[a] = static_cast<std::int64_t>(std::floor((p.at(a) - radius) / cellSize));
-      to[a] = static_cast<std::int64_t>(std::floor((p.at(a) + radius) / cellSize));
+      from[a] = wash::detail::cellCoordinate(p.at(a) - radius, cellSize);
+      to[a] = wash::detail::cellCoordinate(p.at(a) + radius, cellSize);
     }
   };
   // Every stencil lies in [lo, hi]: the stencil's bounds are monotone in p,

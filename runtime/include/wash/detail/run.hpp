@@ -1,0 +1,135 @@
+//===- wash/detail/run.hpp - the run around the kernels, for every runtime -*- C++ -*-===//
+//
+// What every runtime's start() does besides running kernels: the start-up
+// checks of main's settings, the run header, frames and dump through the shared
+// writers, progress, the finiteness checks and the end-of-run summary. The
+// reference runtime and generated programs both use it, so they check, print
+// and write alike.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/detail/frame.hpp>
+#include <wash/detail/progress.hpp>
+#include <wash/detail/run_output.hpp>
+#include <wash/detail/run_settings.hpp>
+#include <wash/vec.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace wash::detail {
+
+/// Whether every component of a value is finite. The generated particle loops
+/// test what each kernel wrote right after it ran, while the values are still
+/// in registers; Run::checkFinite then names the culprit, on the rare failure.
+inline bool finite(double v) { return std::isfinite(v); }
+template <typename T, int D> bool finite(const Vec<T, D> &v) {
+  bool all = true;
+  for (int a = 0; a < D; ++a)
+    all &= bool(std::isfinite(v.at(a)));
+  return all;
+}
+
+/// What a program was translated for: the run checks main's settings against
+/// it. Generated code names every member. The reference runtime is not
+/// translated: it leaves the precision and the rule unset, and runs whatever
+/// main asks for.
+struct Translation {
+  const char *backend = "serial";
+  int dimensions = 2;
+  std::optional<bool> floatStorage = false;          ///< set_precision("float")
+  std::optional<bool> smoothingLengthSearch = false; ///< set_smoothing_length_support
+};
+
+class Run {
+public:
+  /// Checks the settings against what the program was translated for. Only a
+  /// run that `writes` (rank 0 of an MPI job) prints and writes files; every
+  /// rank still builds the frames, which may be collective.
+  Run(const Translation &translated, bool writes);
+  ~Run();
+
+  std::uint64_t steps() const { return steps_; }
+  /// The influence radius (fixed-radius rule only).
+  double radius() const { return radius_; }
+  /// The support radius in units of h (smoothing-length rule only).
+  double support() const { return *runSettings().search.support; }
+  const Box &box() const { return runSettings().box; }
+
+  /// After the init kernels: prints the header, writes frame 0 if due.
+  template <typename FrameFn> void begin(std::size_t particles, FrameFn frame) {
+    started(particles);
+    if (frameDue(0))
+      write(0, frame());
+    stepStart_ = Clock::now();
+  }
+  /// After every kernel of a step.
+  template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
+    stepSeconds_ += std::chrono::duration<double>(Clock::now() - stepStart_).count();
+    if (runSettings().stopRequested)
+      steps_ = step; // wash::stop(): this step is the last, and written as such
+    if (frameDue(step))
+      write(step, frame());
+    if (progress_)
+      progress_->update(step);
+    stepStart_ = Clock::now();
+  }
+  void finish(const Frame &finalFrame);
+  /// Prints one more line of the end-of-run summary (writing run, not --quiet).
+  void report(const std::string &line) const;
+
+  /// Stops the run if a value the kernel wrote, at the given positions (the
+  /// real particles, or an MPI rank's own), is not finite; the message names
+  /// the first bad one in `rows` order. Runs after the init kernels, and after
+  /// a particle loop only when its in-loop test failed: one thread is enough.
+  template <typename T, typename Row>
+  void checkFinite(const std::vector<T> &column, const std::vector<std::uint64_t> &ids,
+                   const std::vector<Row> &rows, std::uint64_t step, const char *kernel,
+                   const char *field) const {
+    for (Row p : rows)
+      if (!finite(column[p]))
+        fail(step, kernel, field, ids[p], column[p]);
+  }
+  /// The same over a whole frame (the reference checks all of its state).
+  void checkFinite(const Frame &frame, std::uint64_t step, const std::string &kernel) const;
+
+private:
+  void started(std::size_t particles);
+  bool frameDue(std::uint64_t step) const;
+  void write(std::uint64_t step, const Frame &frame);
+  template <typename T> static double firstBad(const T &v) { return double(v); }
+  template <typename T, int D> static double firstBad(const Vec<T, D> &v) {
+    for (int a = 0; a < D; ++a)
+      if (!std::isfinite(v.at(a)))
+        return double(v.at(a));
+    return 0.0;
+  }
+  template <typename T>
+  [[noreturn]] void fail(std::uint64_t step, const char *kernel, const char *field,
+                         std::uint64_t id, const T &value) const {
+    failWith(step, kernel, field, id, firstBad(value));
+  }
+  [[noreturn]] void failWith(std::uint64_t step, const char *kernel, const char *field,
+                             std::uint64_t id, double value) const;
+
+  std::string backend_;
+  int dimensions_;
+  bool useFloat_, writes_;
+  std::uint64_t steps_ = 0;
+  double radius_ = 0.0;
+  std::unique_ptr<RunOutput> output_;
+  std::unique_ptr<Progress> progress_;
+  // The steps' own time, frames written excluded: what the summary reports
+  // per particle-step (benchmarks read it; start-up and output vary a lot).
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point stepStart_;
+  double stepSeconds_ = 0.0;
+};
+
+} // namespace wash::detail

@@ -1,0 +1,182 @@
+// The run set-up every runtime shares (run_settings.hpp, run.hpp): the
+// settings calls' checks and messages, and the start-up checks of Run, for a
+// translated program and for the untranslated reference.
+#include <wash/detail/run.hpp>
+#include <wash/settings.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <unistd.h>
+
+using namespace wash;
+using detail::programOptions;
+using detail::runSettings;
+using detail::Translation;
+
+namespace {
+
+constexpr Translation serial2d{.backend = "serial", .dimensions = 2};
+constexpr Translation untranslated{.backend = "reference",
+                                   .dimensions = 2,
+                                   .floatStorage = std::nullopt,
+                                   .smoothingLengthSearch = std::nullopt};
+
+/// Fresh settings of a 2D program whose output goes to a directory of the
+/// test's own: ctest runs the tests in parallel processes.
+struct RunTest : ::testing::Test {
+  std::filesystem::path out = std::filesystem::temp_directory_path() /
+                              ("wash-run-test-" + std::to_string(::getpid()) + "-" +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  void SetUp() override {
+    runSettings() = {.dimensions = 2};
+    programOptions() = {.outDir = out.string(), .quiet = true};
+    set_influence_radius(0.5);
+    set_max_iterations(4);
+  }
+  void TearDown() override { std::filesystem::remove_all(out); }
+};
+
+/// The message of the error f throws.
+template <typename Error, typename F> std::string messageOf(F f) {
+  try {
+    f();
+  } catch (const Error &e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+} // namespace
+
+TEST_F(RunTest, BadSettingsAreErrorsAtTheCall) {
+  const int line = __LINE__ + 1;
+  std::string msg = messageOf<detail::UsageError>([] { set_precision("half"); });
+  EXPECT_NE(msg.find("run_test.cpp:" + std::to_string(line) + ":"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(": error: precision must be \"double\" or \"float\", not \"half\""),
+            std::string::npos)
+      << msg;
+  for (double r : {0.0, -1.0, std::numeric_limits<double>::infinity()})
+    EXPECT_NE(messageOf<detail::UsageError>([r] {
+                set_influence_radius(r);
+              }).find("error: influence radius must be a positive number"),
+              std::string::npos);
+  EXPECT_NE(messageOf<detail::UsageError>([] {
+              set_smoothing_length_support(std::nan(""));
+            }).find("error: the support radius must be a positive multiple of h"),
+            std::string::npos);
+  // The lists must fit the program's dimension, here 2.
+  for (auto box : {std::vector<double>{0.0}, std::vector<double>{0.0, 0.0, 0.0}})
+    EXPECT_NE(messageOf<detail::UsageError>([&] { set_bounding_box(box, box, {true}); })
+                  .find("error: set_bounding_box needs 2 values for lo, hi and periodic, with hi "
+                        "> lo on every axis"),
+              std::string::npos);
+  EXPECT_THROW(set_bounding_box({0.0, 1.0}, {1.0, 1.0}, {false, false}), detail::UsageError);
+}
+
+TEST_F(RunTest, SettingsAreKeptForTheRun) {
+  set_precision("float");
+  set_simulation_name("sim");
+  EXPECT_EQ(runSettings().outputBaseName(), "sim");
+  set_output_file_name("frames");
+  EXPECT_EQ(runSettings().outputBaseName(), "frames");
+  set_bounding_box({0.0, -1.0}, {2.0, 1.0}, {true, false});
+  EXPECT_EQ(runSettings().useFloat, true);
+  EXPECT_EQ(runSettings().maxIterations, 4u);
+  EXPECT_TRUE(runSettings().box.defined && runSettings().box.periodic[0]);
+  EXPECT_EQ(runSettings().box.lo[1], -1.0);
+}
+
+TEST_F(RunTest, StartUpChecksTheNeighbourRuleAndTheIterationCount) {
+  set_smoothing_length_support(2.0);
+  EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
+            "both set_influence_radius and set_smoothing_length_support were called; a "
+            "simulation uses one neighbour rule");
+  runSettings().search = {};
+  EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(untranslated, true); }),
+            "no neighbour rule: call wash::set_influence_radius or "
+            "wash::set_smoothing_length_support before start()");
+  set_influence_radius(0.5);
+  runSettings().maxIterations.reset();
+  EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
+            "no iteration count: call wash::set_max_iterations or pass --steps N");
+  programOptions().steps = 7; // --steps overrides set_max_iterations
+  set_max_iterations(4);
+  EXPECT_EQ(detail::Run(serial2d, true).steps(), 7u);
+  EXPECT_EQ(detail::Run(serial2d, true).radius(), 0.5);
+}
+
+TEST_F(RunTest, APeriodicBoxMustBeLongerThanTwiceTheRadius) {
+  set_bounding_box({0.0, 0.0}, {2.0, 0.9}, {false, true});
+  EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
+            "a periodic box must be longer than twice the influence radius (axis 1)");
+}
+
+TEST_F(RunTest, ATranslatedProgramRunsOnlyWhatItWasTranslatedFor) {
+  set_precision("float");
+  EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
+            "this program was translated for double precision, but main asked for float");
+  runSettings().useFloat.reset();
+  runSettings().search = {.support = 2.0};
+  EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
+            "this program was translated for an influence-radius neighbour search, but main "
+            "asked for smoothing lengths; call the neighbour-rule setting unconditionally in main");
+}
+
+TEST_F(RunTest, TheReferenceRunsWhateverMainAsksFor) {
+  set_precision("float");
+  runSettings().search = {.support = 2.0};
+  detail::Run run(untranslated, true);
+  EXPECT_EQ(run.support(), 2.0);
+}
+
+TEST_F(RunTest, HeaderAndSummaryLines) {
+  programOptions().quiet = false;
+  set_simulation_name("lines");
+  set_precision("float");
+  detail::Frame frame;
+  frame.ids = {0, 1, 2};
+  frame.columns.push_back({"pos", 2, {0.0, 0.0, 1.0, 0.0, 2.0, 0.0}});
+  testing::internal::CaptureStdout();
+  {
+    detail::Run run(untranslated, true);
+    run.begin(3, [&] { return frame; });
+    for (std::uint64_t step = 1; step <= run.steps(); ++step)
+      run.endStep(step, [&] { return frame; });
+    run.finish(frame);
+  }
+  std::string text = testing::internal::GetCapturedStdout();
+  EXPECT_TRUE(text.starts_with("wash reference: 'lines', 3 particles, 2D, float, influence "
+                               "radius 0.5, 4 steps\nwash: 4 steps of 3 particles in "))
+      << text;
+  EXPECT_NE(text.find(" ns per particle-step; output in " + out.string() + "\n"), std::string::npos)
+      << text;
+}
+
+TEST_F(RunTest, AStopEndsTheRunAtThatStep) {
+  detail::Run run(serial2d, /*writes=*/false);
+  run.begin(0, [] { return detail::Frame{}; });
+  run.endStep(1, [] { return detail::Frame{}; });
+  EXPECT_EQ(run.steps(), 4u);
+  runSettings().stopRequested = true;
+  run.endStep(2, [] { return detail::Frame{}; });
+  EXPECT_EQ(run.steps(), 2u);
+  EXPECT_FALSE(std::filesystem::exists(out)) << "a run that does not write made its directory";
+}
+
+TEST_F(RunTest, NonFiniteValuesNameStepKernelFieldAndParticle) {
+  detail::Run run(serial2d, true);
+  std::vector<Vec2D> vel{{1.0, 2.0}, {3.0, -std::numeric_limits<double>::infinity()}};
+  std::vector<std::uint64_t> ids{7, 9};
+  std::vector<std::uint32_t> rows{0, 1};
+  EXPECT_EQ(messageOf<detail::RunError>([&] { run.checkFinite(vel, ids, rows, 3, "push", "vel"); }),
+            "step 3: after kernel 'push': field 'vel' of particle 9 is -inf");
+  detail::Frame frame;
+  frame.ids = ids;
+  frame.columns.push_back({"density", 1, {1.0, std::nan("")}});
+  EXPECT_EQ(messageOf<detail::RunError>([&] { run.checkFinite(frame, 0, "init"); }),
+            "step 0: after kernel 'init': field 'density' of particle 9 is nan");
+}
