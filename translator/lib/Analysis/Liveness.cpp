@@ -1,5 +1,6 @@
 //===- Liveness.cpp -------------------------------------------------------===//
 #include "wash/translator/Analysis/Liveness.h"
+#include "wash/translator/WashApiTable.h"
 
 namespace wash::tr {
 
@@ -10,7 +11,8 @@ void computeLiveness(Model &M) {
       Read |= K.OwnReads.count(F.Name) || K.NeighbourReads.count(F.Name);
       Written |= K.OwnWrites.count(F.Name) > 0;
     }
-    F.Live = Read || Written || (F.Origin == FieldOrigin::Builtin && isAlwaysOutput(F.Name));
+    const BuiltinField *B = F.Origin == FieldOrigin::Builtin ? builtinField(F.Name) : nullptr;
+    F.Live = Read || Written || (B && B->AlwaysOutput);
     F.OutputOnly = Written && !Read;
     if (!F.Live && F.Origin == FieldOrigin::Registered)
       M.Findings.push_back({DiagId::ForceUnused, F.Pos, {F.Name}, {}});

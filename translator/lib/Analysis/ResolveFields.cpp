@@ -1,18 +1,18 @@
 //===- ResolveFields.cpp --------------------------------------------------===//
 #include "wash/translator/Analysis/ResolveFields.h"
+#include "wash/translator/WashApiTable.h"
 
 #include <algorithm>
 
 namespace wash::tr {
 
-static Field builtin(const std::string &Name, unsigned Dim) {
+static Field builtin(const BuiltinField &B, unsigned Dim) {
   Field F;
-  F.Name = Name;
+  F.Name = B.Name;
   F.Origin = FieldOrigin::Builtin;
-  bool Vector = Name == "pos" || Name == "vel" || Name == "acc";
-  F.Kind = Vector ? ForceKind::Vector : ForceKind::Scalar;
-  F.Dim = Vector ? Dim : 1;
-  F.ReadOnly = Name == "id";
+  F.Kind = B.storage();
+  F.Dim = F.Kind == ForceKind::Vector ? Dim : 1;
+  F.ReadOnly = !B.settable();
   return F;
 }
 
@@ -31,8 +31,8 @@ static Finding mismatch(const Field &F, const Access &A) {
 void resolveFields(Model &M) {
   const unsigned Dim = M.Sim.Dimension;
   M.Fields.clear();
-  for (const std::string &Name : builtinFieldNames())
-    M.Fields.push_back(builtin(Name, Dim));
+  for (const BuiltinField &B : builtinFields())
+    M.Fields.push_back(builtin(B, Dim));
   for (const ForceRegistration &R : M.Forces) {
     Field F;
     F.Name = R.Name;
