@@ -55,7 +55,8 @@ public:
     if (!TL.getAs<QualifiedTypeLoc>()) {
       QualType T = TL.getType();
       if (isParticleVector(T))
-        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "wash_gen::NeighbourList");
+        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()},
+                       "wash_gen::NeighbourList");
       if (isParticleType(T)) // a const reference or a copy: a self or a neighbour
         return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "auto");
     }
@@ -68,7 +69,8 @@ public:
     if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID())
       if (auto Distance = Plan.distanceText(D.toPos(E->getBeginLoc()), text(E->getSourceRange())))
         return replace(E->getSourceRange(), *Distance);
-    if (!isParticleMethod(E->getMethodDecl()))
+    auto Accessor = particleAccessor(E->getMethodDecl());
+    if (!Accessor)
       return true;
     const auto *Callee = dyn_cast<MemberExpr>(E->getCallee()->IgnoreParens());
     if (!Callee)
@@ -81,37 +83,39 @@ public:
     std::string Object = text(Base->getSourceRange());
     if (Callee->isArrow())
       Object = "(*" + Object + ")";
-    StringRef Method = E->getMethodDecl()->getName();
-    bool IsSet = Method.starts_with("set_");
+    bool IsSet = Accessor->How == Mode::Write;
     std::string Field, Value;
     unsigned ValueArg = 0;
-    if (Method.ends_with("_force_scalar") || Method.ends_with("_force_vector")) {
+    if (Accessor->isForce()) {
       auto Name = evaluateString(E->getArg(0), Ctx);
       if (!Name) // InferAccesses already rejected this; keep the pass total.
         return true;
       Field = *Name;
       ValueArg = 1;
     } else {
-      Field = Method.drop_front(4).str(); // get_/set_
+      Field = Accessor->Field->Name;
     }
     if (IsSet)
       Value = text(E->getArg(ValueArg)->getSourceRange());
-    std::string Lowered = IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object);
+    std::string Lowered =
+        IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object);
     if (IsSet && !isStatement(E))
       Lowered = "(" + Lowered + ")";
     return replace(E->getSourceRange(), Lowered);
   }
 
   bool VisitCallExpr(CallExpr *E) {
-    const FunctionDecl *FD = E->getDirectCallee();
-    if (!inMainFile(E->getBeginLoc()) || !isWashFunction(FD))
+    const ApiCallInfo *Call = washCall(E->getDirectCallee());
+    if (!inMainFile(E->getBeginLoc()) || !Call)
       return true;
-    StringRef Name = FD->getName();
-    if (Name == "add_force" || Name == "add_init_kernel" || Name == "add_update_kernel" ||
-        Name == "add_force_kernel" || Name == "add_void_kernel" || Name == "add_reduction_kernel")
+    switch (Call->Lowering) {
+    case CallLowering::Drop:
       return replace(E->getSourceRange(), "(void)0 /* registered by the translator */");
-    if (Name == "start" || Name == "create_particle")
-      return replace(E->getCallee()->getSourceRange(), "wash_gen::" + Name.str());
+    case CallLowering::Generated:
+      return replace(E->getCallee()->getSourceRange(), std::string("wash_gen::") + Call->Name);
+    case CallLowering::Keep:
+      return true;
+    }
     return true;
   }
 
@@ -123,7 +127,8 @@ public:
     size_t Offset = 0;
     while (Offset < Buffer.size()) {
       size_t End = Buffer.find('\n', Offset);
-      StringRef Line = Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
+      StringRef Line =
+          Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
       if (Include.match(Line)) {
         SourceLocation Begin = SM.getLocForStartOfFile(Main).getLocWithOffset(Offset);
         R.ReplaceText(Begin, Line.size(), "#include \"" + Plan.headerName() + "\"");
