@@ -8,8 +8,10 @@
 #include "clang/Rewrite/Core/Rewriter.h"
 #include "llvm/Support/Regex.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
+#include <string_view>
 
 using namespace clang;
 
@@ -110,7 +112,7 @@ public:
       return true;
     switch (Call->Lowering) {
     case CallLowering::Drop:
-      return replace(E->getSourceRange(), "(void)0 /* registered by the translator */");
+      return replace(E->getSourceRange(), "(void)0 /* " + registrationNote(E, *Call) + " */");
     case CallLowering::Generated:
       return replace(E->getCallee()->getSourceRange(), std::string("wash_gen::") + Call->Name);
     case CallLowering::Keep:
@@ -171,6 +173,30 @@ private:
   /// The text of a range as rewritten so far.
   std::string text(SourceRange Range) const {
     return R.getRewrittenText(CharSourceRange::getTokenRange(Range));
+  }
+
+  /// What a dropped registration did, for the comment that replaces it: the
+  /// call as written, whitespace collapsed except for newlines (the line
+  /// count must not change), and nothing that ends or opens a comment.
+  std::string registrationNote(const CallExpr *E, const ApiCallInfo &Call) const {
+    std::string Written = text(E->getSourceRange()), Note;
+    for (size_t I = 0; I < Written.size();) {
+      if (!std::isspace((unsigned char)Written[I])) {
+        char C = Written[I++];
+        Note += C;
+        // `*/` would end the comment, `/*` draws -Wcomment.
+        if ((C == '*' || C == '/') && I < Written.size() && Written[I] == (C == '*' ? '/' : '*'))
+          Note += ' ';
+        continue;
+      }
+      size_t End = Written.find_first_not_of(" \t\n\v\f\r", I);
+      std::string_view Space(Written.data() + I,
+                             (End == std::string::npos ? Written.size() : End) - I);
+      size_t Newlines = std::count(Space.begin(), Space.end(), '\n');
+      Note += Newlines ? std::string(Newlines, '\n') : " ";
+      I += Space.size();
+    }
+    return Note + (Call.Kernel ? ": run by the driver" : ": registered by the translator");
   }
 
   /// Whether E's value is unused: it is a statement of its own.
