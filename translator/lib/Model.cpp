@@ -1,5 +1,6 @@
 //===- Model.cpp - model helpers and the diagnostic tables ----------------===//
 #include "wash/translator/Model.h"
+#include "wash/translator/WashApiTable.h"
 
 #include <algorithm>
 
@@ -44,20 +45,13 @@ const char *kernelKindName(KernelKind K) {
 }
 
 const std::vector<std::string> &builtinFieldNames() {
-  static const std::vector<std::string> Names = {
-      "id", "pos", "vel", "acc", "density", "mass", "smoothing_length"};
+  static const std::vector<std::string> Names = [] {
+    std::vector<std::string> N;
+    for (const BuiltinField &F : builtinFields())
+      N.push_back(F.Name);
+    return N;
+  }();
   return Names;
-}
-
-bool isBuiltinField(const std::string &Name) {
-  const auto &B = builtinFieldNames();
-  return std::find(B.begin(), B.end(), Name) != B.end();
-}
-
-bool isAlwaysOutput(const std::string &Name) {
-  // The columns every output format has (docs/semantics.md); acc is not one.
-  return Name == "id" || Name == "pos" || Name == "vel" || Name == "density" || Name == "mass" ||
-         Name == "smoothing_length";
 }
 
 const Field *Model::findField(const std::string &Name) const {

@@ -38,8 +38,8 @@ void Push(wash::Particle& p, const std::vector<wash::Particle>& ns) {
 
 // CHECK: int main() {
 // CHECK-NEXT: wash::set_influence_radius(0.1);
-// CHECK-NEXT: (void)0 /* registered by the translator */;
-// CHECK-NEXT: (void)0 /* registered by the translator */;
+// CHECK-NEXT: (void)0 /* wash::add_init_kernel(&Spawn): run by the driver */;
+// CHECK-NEXT: (void)0 /* wash::add_force_kernel(&Push): run by the driver */;
 // CHECK-NEXT: wash::set_max_iterations(1);
 // CHECK-NEXT: wash_gen::start();
 int main() {

@@ -1,5 +1,6 @@
 //===- Liveness.cpp -------------------------------------------------------===//
 #include "wash/translator/Analysis/Liveness.h"
+#include "wash/translator/WashApiTable.h"
 
 namespace wash::tr {
 
@@ -11,8 +12,9 @@ Liveness computeLiveness(const std::vector<Field> &Fields, const std::vector<Ker
       Read |= K.OwnReads.count(F.Name) || K.NeighbourReads.count(F.Name);
       Written |= K.OwnWrites.count(F.Name) > 0;
     }
+    const BuiltinField *B = F.Origin == FieldOrigin::Builtin ? builtinField(F.Name) : nullptr;
     FieldLiveness L;
-    L.Live = Read || Written || (F.Origin == FieldOrigin::Builtin && isAlwaysOutput(F.Name));
+    L.Live = Read || Written || (B && B->AlwaysOutput);
     L.OutputOnly = Written && !Read;
     if (!L.Live && F.Origin == FieldOrigin::Registered)
       Result.Findings.push_back({DiagId::ForceUnused, F.Pos, {F.Name}, {}});

@@ -1,18 +1,18 @@
 //===- ResolveFields.cpp --------------------------------------------------===//
 #include "wash/translator/Analysis/ResolveFields.h"
+#include "wash/translator/WashApiTable.h"
 
 #include <algorithm>
 
 namespace wash::tr {
 
-static Field builtin(const std::string &Name, unsigned Dim) {
+static Field builtin(const BuiltinField &B, unsigned Dim) {
   Field F;
-  F.Name = Name;
+  F.Name = B.Name;
   F.Origin = FieldOrigin::Builtin;
-  bool Vector = Name == "pos" || Name == "vel" || Name == "acc";
-  F.Kind = Vector ? ForceKind::Vector : ForceKind::Scalar;
-  F.Dim = Vector ? Dim : 1;
-  F.ReadOnly = Name == "id";
+  F.Kind = B.storage();
+  F.Dim = F.Kind == ForceKind::Vector ? Dim : 1;
+  F.ReadOnly = !B.settable();
   return F;
 }
 
@@ -32,8 +32,8 @@ ResolvedFields resolveFields(unsigned Dim, const std::vector<ForceRegistration> 
                              const std::vector<Kernel> &Kernels) {
   ResolvedFields Result;
   std::vector<Field> &Fields = Result.Fields;
-  for (const std::string &Name : builtinFieldNames())
-    Fields.push_back(builtin(Name, Dim));
+  for (const BuiltinField &B : builtinFields())
+    Fields.push_back(builtin(B, Dim));
   for (const ForceRegistration &R : Forces) {
     Field F;
     F.Name = R.Name;

@@ -8,8 +8,10 @@
 #include "clang/Rewrite/Core/Rewriter.h"
 #include "llvm/Support/Regex.h"
 
+#include <algorithm>
 #include <cctype>
 #include <set>
+#include <string_view>
 
 using namespace clang;
 
@@ -55,7 +57,8 @@ public:
     if (!TL.getAs<QualifiedTypeLoc>()) {
       QualType T = TL.getType();
       if (isParticleVector(T))
-        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "wash_gen::NeighbourList");
+        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()},
+                       "wash_gen::NeighbourList");
       if (isParticleType(T)) // a const reference or a copy: a self or a neighbour
         return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "auto");
     }
@@ -68,7 +71,8 @@ public:
     if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID())
       if (auto Distance = Plan.distanceText(D.toPos(E->getBeginLoc()), text(E->getSourceRange())))
         return replace(E->getSourceRange(), *Distance);
-    if (!isParticleMethod(E->getMethodDecl()))
+    auto Accessor = particleAccessor(E->getMethodDecl());
+    if (!Accessor)
       return true;
     const auto *Callee = dyn_cast<MemberExpr>(E->getCallee()->IgnoreParens());
     if (!Callee)
@@ -81,37 +85,39 @@ public:
     std::string Object = text(Base->getSourceRange());
     if (Callee->isArrow())
       Object = "(*" + Object + ")";
-    StringRef Method = E->getMethodDecl()->getName();
-    bool IsSet = Method.starts_with("set_");
+    bool IsSet = Accessor->How == Mode::Write;
     std::string Field, Value;
     unsigned ValueArg = 0;
-    if (Method.ends_with("_force_scalar") || Method.ends_with("_force_vector")) {
+    if (Accessor->isForce()) {
       auto Name = evaluateString(E->getArg(0), Ctx);
       if (!Name) // InferAccesses already rejected this; keep the pass total.
         return true;
       Field = *Name;
       ValueArg = 1;
     } else {
-      Field = Method.drop_front(4).str(); // get_/set_
+      Field = Accessor->Field->Name;
     }
     if (IsSet)
       Value = text(E->getArg(ValueArg)->getSourceRange());
-    std::string Lowered = IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object);
+    std::string Lowered =
+        IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object);
     if (IsSet && !isStatement(E))
       Lowered = "(" + Lowered + ")";
     return replace(E->getSourceRange(), Lowered);
   }
 
   bool VisitCallExpr(CallExpr *E) {
-    const FunctionDecl *FD = E->getDirectCallee();
-    if (!inMainFile(E->getBeginLoc()) || !isWashFunction(FD))
+    const ApiCallInfo *Call = washCall(E->getDirectCallee());
+    if (!inMainFile(E->getBeginLoc()) || !Call)
       return true;
-    StringRef Name = FD->getName();
-    if (Name == "add_force" || Name == "add_init_kernel" || Name == "add_update_kernel" ||
-        Name == "add_force_kernel" || Name == "add_void_kernel" || Name == "add_reduction_kernel")
-      return replace(E->getSourceRange(), "(void)0 /* registered by the translator */");
-    if (Name == "start" || Name == "create_particle")
-      return replace(E->getCallee()->getSourceRange(), "wash_gen::" + Name.str());
+    switch (Call->Lowering) {
+    case CallLowering::Drop:
+      return replace(E->getSourceRange(), "(void)0 /* " + registrationNote(E, *Call) + " */");
+    case CallLowering::Generated:
+      return replace(E->getCallee()->getSourceRange(), std::string("wash_gen::") + Call->Name);
+    case CallLowering::Keep:
+      return true;
+    }
     return true;
   }
 
@@ -123,7 +129,8 @@ public:
     size_t Offset = 0;
     while (Offset < Buffer.size()) {
       size_t End = Buffer.find('\n', Offset);
-      StringRef Line = Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
+      StringRef Line =
+          Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
       if (Include.match(Line)) {
         SourceLocation Begin = SM.getLocForStartOfFile(Main).getLocWithOffset(Offset);
         R.ReplaceText(Begin, Line.size(), "#include \"" + Plan.headerName() + "\"");
@@ -166,6 +173,30 @@ private:
   /// The text of a range as rewritten so far.
   std::string text(SourceRange Range) const {
     return R.getRewrittenText(CharSourceRange::getTokenRange(Range));
+  }
+
+  /// What a dropped registration did, for the comment that replaces it: the
+  /// call as written, whitespace collapsed except for newlines (the line
+  /// count must not change), and nothing that ends or opens a comment.
+  std::string registrationNote(const CallExpr *E, const ApiCallInfo &Call) const {
+    std::string Written = text(E->getSourceRange()), Note;
+    for (size_t I = 0; I < Written.size();) {
+      if (!std::isspace((unsigned char)Written[I])) {
+        char C = Written[I++];
+        Note += C;
+        // `*/` would end the comment, `/*` draws -Wcomment.
+        if ((C == '*' || C == '/') && I < Written.size() && Written[I] == (C == '*' ? '/' : '*'))
+          Note += ' ';
+        continue;
+      }
+      size_t End = Written.find_first_not_of(" \t\n\v\f\r", I);
+      std::string_view Space(Written.data() + I,
+                             (End == std::string::npos ? Written.size() : End) - I);
+      size_t Newlines = std::count(Space.begin(), Space.end(), '\n');
+      Note += Newlines ? std::string(Newlines, '\n') : " ";
+      I += Space.size();
+    }
+    return Note + (Call.Kernel ? ": run by the driver" : ": registered by the translator");
   }
 
   /// Whether E's value is unused: it is a statement of its own.

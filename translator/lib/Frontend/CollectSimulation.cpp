@@ -60,9 +60,9 @@ private:
     const FunctionDecl *FD = CE->getDirectCallee();
     if (!FD)
       return;
-    if (isRegistrationFunction(FD)) {
+    if (const ApiCallInfo *Call = washCall(FD); Call && Call->readFromMain()) {
       Reached.insert(CE->getBeginLoc().getRawEncoding());
-      registration(CE, FD->getName(), InLoop);
+      registration(CE, *Call, InLoop);
       return;
     }
     const FunctionDecl *Def = FD->getDefinition();
@@ -84,53 +84,73 @@ private:
     return "\"" + *S + "\"";
   }
 
-  void registration(const CallExpr *CE, StringRef Name, bool InLoop) {
-    bool Adds = Name.starts_with("add_");
-    if (Adds && InLoop) {
-      D.report(DiagId::RegistrationInLoop, CE->getBeginLoc(), {Name.str()});
+  void registration(const CallExpr *CE, const ApiCallInfo &Call, bool InLoop) {
+    if (Call.Use == CallUse::MainOnce && InLoop) {
+      D.report(DiagId::RegistrationInLoop, CE->getBeginLoc(), {Call.Name});
       return;
     }
+    if (Call.Kernel)
+      return kernel(CE, *Call.Kernel);
     const Expr *Arg = CE->getNumArgs() ? CE->getArg(0) : nullptr;
-    if (Name == "start") {
+    // Every call is listed, so that -Wswitch points here for a new one.
+    switch (Call.Id) {
+    case ApiCall::start:
       M.Sim.CallsStart = true;
-    } else if (Name == "set_precision") {
-      auto S = evaluateString(Arg, Ctx);
-      if (!S || (*S != "double" && *S != "float"))
-        D.report(DiagId::PrecisionInvalid, Arg->getExprLoc());
-      else
+      break;
+    case ApiCall::set_precision:
+      if (auto S = evaluateString(Arg, Ctx); S && (*S == "double" || *S == "float"))
         M.Sim.Precision = *S;
-    } else if (Name == "set_influence_radius") {
+      else
+        D.report(DiagId::PrecisionInvalid, Arg->getExprLoc());
+      break;
+    case ApiCall::set_influence_radius:
       M.Sim.InfluenceRadius = value(Arg, evaluateNumber(Arg, Ctx));
-    } else if (Name == "set_smoothing_length_support") {
+      break;
+    case ApiCall::set_smoothing_length_support:
       M.Sim.SmoothingLengthSupport = value(Arg, evaluateNumber(Arg, Ctx));
-    } else if (Name == "set_max_iterations") {
+      break;
+    case ApiCall::set_max_iterations: {
       auto N = evaluateInt(Arg, Ctx);
       M.Sim.MaxIterations = value(Arg, N ? std::optional(std::to_string(*N)) : std::nullopt);
-    } else if (Name == "set_simulation_name") {
-      M.Sim.SimulationNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
-    } else if (Name == "set_output_file_name") {
-      M.Sim.OutputFileNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
-    } else if (Name == "add_force") {
-      addForce(CE);
-    } else if (Name == "set_bounding_box" || Name == "add_variable") {
-      // Run-time settings: the generated program makes the same call.
-    } else {
-      KernelKind Kind = Name == "add_init_kernel"     ? KernelKind::Init
-                        : Name == "add_update_kernel" ? KernelKind::Update
-                        : Name == "add_void_kernel"   ? KernelKind::Void
-                        : Name == "add_reduction_kernel" ? KernelKind::Reduction
-                                                      : KernelKind::Force;
-      if (const FunctionDecl *Def = resolveKernel(CE, Kind, Ctx, D)) {
-        Kernel K;
-        K.Kind = Kind;
-        if (Kind == KernelKind::Reduction && !reduction(CE, K))
-          return;
-        K.Function = Def->getQualifiedNameAsString();
-        K.Pos = D.toPos(CE->getBeginLoc());
-        M.Kernels.push_back(K);
-        Refs.Kernels.push_back(Def);
-      }
+      break;
     }
+    case ApiCall::set_simulation_name:
+      M.Sim.SimulationNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
+      break;
+    case ApiCall::set_output_file_name:
+      M.Sim.OutputFileNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
+      break;
+    case ApiCall::add_force:
+      addForce(CE);
+      break;
+    case ApiCall::set_bounding_box:
+    case ApiCall::add_variable:
+      break; // Run-time settings: the generated program makes the same call.
+    case ApiCall::add_init_kernel:
+    case ApiCall::add_update_kernel:
+    case ApiCall::add_force_kernel:
+    case ApiCall::add_void_kernel:
+    case ApiCall::add_reduction_kernel:
+    case ApiCall::get_variable:
+    case ApiCall::set_variable:
+    case ApiCall::create_particle:
+    case ApiCall::stop:
+      break; // Kernels are registered above; the rest is not read from main.
+    }
+  }
+
+  void kernel(const CallExpr *CE, KernelKind Kind) {
+    const FunctionDecl *Def = resolveKernel(CE, Kind, Ctx, D);
+    if (!Def)
+      return;
+    Kernel K;
+    K.Kind = Kind;
+    if (Kind == KernelKind::Reduction && !reduction(CE, K))
+      return;
+    K.Function = Def->getQualifiedNameAsString();
+    K.Pos = D.toPos(CE->getBeginLoc());
+    M.Kernels.push_back(K);
+    Refs.Kernels.push_back(Def);
   }
 
   /// The operation and variable of `add_reduction_kernel(&f, op, "variable")`.

@@ -110,14 +110,14 @@ private:
     return DRE && DRE->getDecl() == Self;
   }
 
-  /// The field a setter call sets: set_<builtin>, or a force by constant name.
+  /// The field a setter call sets: a builtin's, or a force by constant name.
   std::optional<std::string> setterField(const CXXMemberCallExpr *Call) {
-    StringRef Name = Call->getMethodDecl()->getName();
-    if (Name == "set_force_scalar" || Name == "set_force_vector")
+    auto A = particleAccessor(Call->getMethodDecl());
+    if (!A || A->How != Mode::Write)
+      return std::nullopt;
+    if (A->isForce())
       return Call->getNumArgs() ? evaluateString(Call->getArg(0), Ctx) : std::nullopt;
-    if (Name.starts_with("set_"))
-      return Name.drop_front(4).str();
-    return std::nullopt;
+    return A->Field->Name;
   }
 
   ASTContext &Ctx;

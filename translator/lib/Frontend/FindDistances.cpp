@@ -135,8 +135,8 @@ private:
   /// `x.get_pos()` with x the particle parameter or an element of the list.
   std::optional<End> endOf(const Expr *E, bool ViaLocal) {
     const auto *Get = dyn_cast<CXXMemberCallExpr>(strip(throughLocals(E, ViaLocal)));
-    if (!Get || !isParticleMethod(Get->getMethodDecl()) ||
-        Get->getMethodDecl()->getName() != "get_pos")
+    auto Accessor = Get ? particleAccessor(Get->getMethodDecl()) : std::nullopt;
+    if (!Accessor || !Accessor->reads("pos"))
       return std::nullopt;
     const Expr *Object = strip(Get->getImplicitObjectArgument());
     End Result;

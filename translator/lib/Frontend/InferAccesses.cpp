@@ -17,29 +17,6 @@ using namespace clang;
 namespace wash::tr {
 namespace {
 
-struct Property {
-  std::string Field; ///< Empty for forces: the name is the first argument.
-  Mode How;
-  std::optional<ForceKind> Kind;
-};
-
-/// The property a wash::Particle member function reads or writes.
-std::optional<Property> classify(StringRef Method) {
-  if (Method == "get_id")
-    return Property{"id", Mode::Read, std::nullopt};
-  if (Method == "get_force_scalar" || Method == "set_force_scalar")
-    return Property{"", Method[0] == 'g' ? Mode::Read : Mode::Write, ForceKind::Scalar};
-  if (Method == "get_force_vector" || Method == "set_force_vector")
-    return Property{"", Method[0] == 'g' ? Mode::Read : Mode::Write, ForceKind::Vector};
-  for (StringRef F : {"pos", "vel", "acc", "density", "mass", "smoothing_length"}) {
-    if (Method == ("get_" + F).str())
-      return Property{F.str(), Mode::Read, std::nullopt};
-    if (Method == ("set_" + F).str())
-      return Property{F.str(), Mode::Write, std::nullopt};
-  }
-  return std::nullopt;
-}
-
 /// One function body being analysed, with the roles of its variables.
 struct Frame {
   llvm::DenseMap<const ValueDecl *, Roles> Vars;
@@ -215,20 +192,22 @@ void KernelAnalyser::call(const CallExpr *CE) {
   }
   if (isParticleMethod(FD))
     return particleMethod(CE, FD);
-  if (isWashFunction(FD, "create_particle")) {
+  if (isWashCall(FD, ApiCall::create_particle)) {
     if (K.Kind != KernelKind::Init) {
       D.report(DiagId::CreateOutsideInit, CE->getBeginLoc(), {kernelKindName(K.Kind), K.Function});
       return;
     }
-    for (const char *F : {"pos", "vel", "density", "mass", "smoothing_length"})
-      add({F, Target::Own, Mode::Write, std::nullopt, D.toPos(CE->getBeginLoc())});
+    for (const BuiltinField &F : builtinFields())
+      if (F.Created)
+        add({F.Name, Target::Own, Mode::Write, std::nullopt, D.toPos(CE->getBeginLoc())});
     return;
   }
-  if (isWashFunction(FD, "stop") && K.Kind != KernelKind::Void) {
-    D.report(DiagId::StopOutsideVoidKernel, CE->getBeginLoc(), {kernelKindName(K.Kind), K.Function});
+  if (isWashCall(FD, ApiCall::stop) && K.Kind != KernelKind::Void) {
+    D.report(DiagId::StopOutsideVoidKernel, CE->getBeginLoc(),
+             {kernelKindName(K.Kind), K.Function});
     return;
   }
-  if (isWashFunction(FD, "set_variable") &&
+  if (isWashCall(FD, ApiCall::set_variable) &&
       (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)) {
     D.report(DiagId::VariableWriteInParticleKernel, CE->getBeginLoc(),
              {kernelKindName(K.Kind), K.Function});
@@ -268,10 +247,12 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
       D.report(DiagId::NeighbourWrite, CE->getExprLoc(), {"operator="});
     return;
   }
-  auto P = classify(Method);
+  auto P = particleAccessor(FD);
   if (!P)
     return;
-  if (P->Kind) {
+  std::string Field;
+  std::optional<ForceKind> Kind; // Set for forces only: which accessor was used.
+  if (P->isForce()) {
     if (CE->getNumArgs() <= FirstArg)
       return;
     const Expr *NameArg = CE->getArg(FirstArg);
@@ -280,7 +261,10 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
       D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
       return;
     }
-    P->Field = *Name;
+    Field = *Name;
+    Kind = P->Kind;
+  } else {
+    Field = P->Field->Name;
   }
   SourceLocation Loc = CE->getExprLoc();
   if (!(R & (RoleOwn | RoleNeighbour))) {
@@ -288,12 +272,12 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
     return;
   }
   if (R & RoleOwn)
-    add({P->Field, Target::Own, P->How, P->Kind, D.toPos(Loc)});
+    add({Field, Target::Own, P->How, Kind, D.toPos(Loc)});
   if (R & RoleNeighbour) {
     if (P->How == Mode::Write)
       D.report(DiagId::NeighbourWrite, Loc, {Method});
     else
-      add({P->Field, Target::Neighbour, P->How, P->Kind, D.toPos(Loc)});
+      add({Field, Target::Neighbour, P->How, Kind, D.toPos(Loc)});
   }
 }
 

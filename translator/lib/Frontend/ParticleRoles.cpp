@@ -71,7 +71,7 @@ Roles RoleEvaluator::ofLibraryCall(const CallExpr *CE) const {
   const FunctionDecl *FD = CE->getDirectCallee();
   if (!FD)
     return 0;
-  if (isWashFunction(FD, "create_particle"))
+  if (isWashCall(FD, ApiCall::create_particle))
     return RoleOwn;
   StringRef Name = FD->getIdentifier() ? FD->getName() : "";
 

@@ -18,24 +18,23 @@ static bool inWashNamespace(const DeclContext *DC) {
   return NS && NS->getName() == "wash" && NS->getParent()->getRedeclContext()->isTranslationUnit();
 }
 
-bool isWashFunction(const FunctionDecl *FD, llvm::StringRef Name) {
-  if (!FD || isa<CXXMethodDecl>(FD) || !FD->getIdentifier() ||
-      !inWashNamespace(FD->getDeclContext()))
-    return false;
-  return Name.empty() || FD->getName() == Name;
+bool isWashFunction(const FunctionDecl *FD) {
+  return FD && !isa<CXXMethodDecl>(FD) && FD->getIdentifier() &&
+         inWashNamespace(FD->getDeclContext());
+}
+
+const ApiCallInfo *washCall(const FunctionDecl *FD) {
+  return isWashFunction(FD) ? apiCall(std::string_view(FD->getName())) : nullptr;
+}
+
+bool isWashCall(const FunctionDecl *FD, ApiCall Id) {
+  const ApiCallInfo *Call = washCall(FD);
+  return Call && Call->Id == Id;
 }
 
 bool isRegistrationFunction(const FunctionDecl *FD) {
-  if (!isWashFunction(FD))
-    return false;
-  StringRef N = FD->getName();
-  return N == "set_precision" || N == "set_influence_radius" ||
-         N == "set_smoothing_length_support" || N == "set_simulation_name" ||
-         N == "set_output_file_name" || N == "set_max_iterations" || N == "set_bounding_box" ||
-         N == "add_force" ||
-         N == "add_init_kernel" || N == "add_update_kernel" || N == "add_force_kernel" ||
-         N == "add_void_kernel" || N == "add_reduction_kernel" || N == "add_variable" ||
-         N == "start";
+  const ApiCallInfo *Call = washCall(FD);
+  return Call && Call->readFromMain();
 }
 
 static bool isParticleRecord(const CXXRecordDecl *RD) {
@@ -46,6 +45,12 @@ static bool isParticleRecord(const CXXRecordDecl *RD) {
 bool isParticleMethod(const FunctionDecl *FD) {
   const auto *MD = dyn_cast_or_null<CXXMethodDecl>(FD);
   return MD && isParticleRecord(MD->getParent());
+}
+
+std::optional<ParticleAccessor> particleAccessor(const FunctionDecl *FD) {
+  if (!isParticleMethod(FD) || !FD->getIdentifier())
+    return std::nullopt;
+  return decodeAccessor(std::string_view(FD->getName()));
 }
 
 bool involvesParticle(QualType T) {

@@ -155,10 +155,8 @@ struct Model {
   bool searchKeepsDistances() const { return !Distances.empty(); }
 };
 
-/// The built-in particle properties in dump order.
+/// The built-in particle properties in dump order (WashApiTable.h has the rest
+/// of what the API says about them).
 const std::vector<std::string> &builtinFieldNames();
-bool isBuiltinField(const std::string &Name);
-/// Builtins that output always contains, hence always live.
-bool isAlwaysOutput(const std::string &Name);
 
 } // namespace wash::tr

@@ -1,10 +1,13 @@
 //===- WashApi.h - recognising the wash API in the AST ----------*- C++ -*-===//
 //
 // The frontend passes recognise the API by declaration (namespace wash, the
-// Particle class), never by spelling, so aliases and using-declarations work.
+// Particle class), never by spelling, so aliases and using-declarations work;
+// what a declaration means comes from the table (WashApi.def).
 //
 //===----------------------------------------------------------------------===//
 #pragma once
+
+#include "wash/translator/WashApiTable.h"
 
 #include "clang/AST/ASTContext.h"
 #include "clang/AST/Decl.h"
@@ -15,12 +18,18 @@
 
 namespace wash::tr {
 
-/// FD is the free function wash::Name (Name empty: any function directly in wash).
-bool isWashFunction(const clang::FunctionDecl *FD, llvm::StringRef Name = {});
-/// One of the calls main uses to configure and register: set_*, add_*, start.
+/// FD is a free function directly in namespace wash (the API or its math).
+bool isWashFunction(const clang::FunctionDecl *FD);
+/// The table's entry for FD, if it is one of the API's free functions.
+const ApiCallInfo *washCall(const clang::FunctionDecl *FD);
+/// FD is the API function Id.
+bool isWashCall(const clang::FunctionDecl *FD, ApiCall Id);
+/// One of the calls main uses to configure and register (readFromMain).
 bool isRegistrationFunction(const clang::FunctionDecl *FD);
 /// FD is a member function of wash::Particle.
 bool isParticleMethod(const clang::FunctionDecl *FD);
+/// The accessor FD is, if it is a wash::Particle getter, setter or force accessor.
+std::optional<ParticleAccessor> particleAccessor(const clang::FunctionDecl *FD);
 /// T mentions wash::Particle: the class, a reference or pointer to it, or a
 /// std::vector of it (what a helper must receive to access particles).
 bool involvesParticle(clang::QualType T);
