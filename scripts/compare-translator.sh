@@ -13,6 +13,8 @@ base=$1 new=$2
 shift 2
 scenes=("$@")
 [ ${#scenes[@]} -gt 0 ] || scenes=(examples/*/*.cpp test/e2e/scenes/*.cpp test/stability/closed_box.cpp)
+# Every backend of backends/backends.def.
+backends=$(sed -n 's/^WASH_BACKEND([^,]*, *\([a-z0-9_]*\),.*/\1/p' backends/backends.def)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -29,7 +31,7 @@ for scene in "${scenes[@]}"; do
   if ! diff <("$base" --dump-model "$scene" 2>&1) <("$new" --dump-model "$scene" 2>&1) >"$tmp/diff"; then
     echo "DIFF dump $scene"; head -20 "$tmp/diff"; status=1
   fi
-  for backend in serial openmp mpi; do
+  for backend in $backends; do
     for side in base new; do
       rm -rf "$tmp/$side"
       wash=$base; [ $side = new ] && wash=$new
