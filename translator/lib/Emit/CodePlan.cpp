@@ -1,5 +1,6 @@
 //===- CodePlan.cpp - storage, names and access text for generated code ---===//
 #include "wash/translator/Emit/CodePlan.h"
+#include "wash/translator/WashApiTable.h"
 
 #include <algorithm>
 #include <cctype>
@@ -113,9 +114,10 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   }
 
   // Output: builtins (not acc), registered forces in order, created ones by name.
-  for (const char *B : {"pos", "vel", "density", "mass", "smoothing_length"})
-    if (const Field *F = M.findField(B))
-      Plan.Output.push_back(F);
+  for (const BuiltinField &B : builtinFields())
+    if (B.AlwaysOutput && B.Kind != FieldKind::Id) // ids are the frame's own column
+      if (const Field *F = M.findField(B.Name))
+        Plan.Output.push_back(F);
   for (const ForceRegistration &R : M.Forces)
     if (const Field *F = M.findField(R.Name))
       Plan.Output.push_back(F);

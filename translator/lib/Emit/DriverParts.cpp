@@ -1,6 +1,7 @@
 //===- DriverParts.cpp - the pieces of the generated driver ---------------===//
 #include "wash/translator/Emit/DriverParts.h"
 #include "wash/translator/Emit/RuntimeNames.h"
+#include "wash/translator/WashApiTable.h"
 
 namespace wash::tr {
 
@@ -20,15 +21,15 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
      << "    throw " << rt::RunError << "(\"too many particles for this program's index type\");\n"
      << "  created = Self{Index(index)};\n";
   for (const Field *F : Plan.Stored) {
+    // The builtins create_particle sets take its parameter of the same name
+    // (WashApi.def); everything else starts at zero.
+    const BuiltinField *B = F->Origin == FieldOrigin::Builtin ? builtinField(F->Name) : nullptr;
+    const std::string Type = F->Kind == ForceKind::Vector ? "Stored" : "Real";
     OS << "  P." << Plan.Member.at(F->Name) << ".push_back(";
-    if (F->Name == "id")
+    if (B && B->Kind == FieldKind::Id)
       OS << "index";
-    else if (F->Name == "pos" || F->Name == "vel")
-      OS << "Stored(" << F->Name << ")";
-    else if (F->Name == "density" || F->Name == "mass" || F->Name == "smoothing_length")
-      OS << "Real(" << F->Name << ")";
     else
-      OS << (F->Kind == ForceKind::Vector ? "Stored()" : "Real()");
+      OS << Type << "(" << (B && B->Created ? F->Name : "") << ")";
     OS << ");\n";
   }
   OS << "  return created;\n}\n\n";
