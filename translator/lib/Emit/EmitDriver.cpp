@@ -68,17 +68,14 @@ void emitStart(std::ostream &OS, const Model &M, const CodePlan &Plan,
   OS << "void start() {\n"
      << "  const " << translationText(Plan) << "  " << rt::Run
      << " run(translated, backend.writes());\n";
-  bool AnyInit = false;
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
-    if (M.Kernels[K].Kind == KernelKind::Init) {
+    if (M.Kernels[K].Kind == KernelKind::Init)
       OS << "  " << Callees[K] << "(); // init kernel\n";
-      AnyInit = true;
-    }
   OS << "  // Each process keeps its share of what the init kernels created (they\n"
      << "  // run on every process, so they must be deterministic).\n"
      << "  const std::uint64_t particles = backend.distribute(P, " << domainCellSizeText(Plan)
      << ");\n";
-  for (unsigned K = 0; K < M.Kernels.size() && AnyInit; ++K)
+  for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
       emitWrap(OS, M.Kernels[K], "  ");
       emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "  ");

@@ -63,7 +63,7 @@ template <typename B, int D = B::dimensions>
 concept ParticleBackend =
     requires(B b, const B cb, MinimalParticles<D> &P, const SearchGeometry &at,
              const detail::Box &box, const std::vector<double> &values, detail::Frame frame,
-             const Run &run, std::uint64_t (*cellSize)()) {
+             const Run &run) {
       { B::name } -> std::convertible_to<const char *>;
       /// Whether this process prints and writes files (rank 0 of an MPI job).
       { cb.writes() } -> std::same_as<bool>;
