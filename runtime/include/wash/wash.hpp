@@ -37,7 +37,9 @@ struct ParticleStore;
 }
 
 /// A handle to one particle. Kernels receive their own particle as `Particle&`
-/// and its neighbours as `const std::vector<Particle>&`: neighbours are read-only.
+/// and its neighbours as `const std::vector<Particle>&`: neighbours are read-only
+/// (a setter called on one, through a cast or a copy of the handle, stops the
+/// run with the caller's location).
 class Particle {
 public:
   using Location = std::source_location;
@@ -46,17 +48,17 @@ public:
   std::size_t get_id() const;
 
   ParticleVec get_pos() const;
-  void set_pos(const ParticleVec &pos);
+  void set_pos(const ParticleVec &pos, Location loc = Location::current());
   ParticleVec get_vel() const;
-  void set_vel(const ParticleVec &vel);
+  void set_vel(const ParticleVec &vel, Location loc = Location::current());
   ParticleVec get_acc() const;
-  void set_acc(const ParticleVec &acc);
+  void set_acc(const ParticleVec &acc, Location loc = Location::current());
   double get_density() const;
-  void set_density(double density);
+  void set_density(double density, Location loc = Location::current());
   double get_mass() const;
-  void set_mass(double mass);
+  void set_mass(double mass, Location loc = Location::current());
   double get_smoothing_length() const;
-  void set_smoothing_length(double smoothingLength);
+  void set_smoothing_length(double smoothingLength, Location loc = Location::current());
 
   /// A named per-particle property ("force"). A name never passed to add_force
   /// is created on first use; using one name both as scalar and vector is an error.

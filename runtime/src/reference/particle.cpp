@@ -8,18 +8,47 @@ using detail::state;
 
 std::size_t Particle::get_id() const { return store_->id[index_]; }
 
+namespace {
+
+/// Stops the run if `store` is a force kernel's snapshot of the neighbours:
+/// the translator rejects such a write (NeighbourWrite) with this message.
+void checkWritable(const ParticleStore *store, const char *setter,
+                   const std::source_location &loc) {
+  if (store->neighbours)
+    detail::usageError(loc, std::string("'") + setter +
+                                "' writes to a neighbour particle; neighbours are read-only");
+}
+
+} // namespace
+
 ParticleVec Particle::get_pos() const { return image_ ? *image_ : store_->pos[index_]; }
-void Particle::set_pos(const ParticleVec &pos) { store_->pos[index_] = state().store(pos); }
+void Particle::set_pos(const ParticleVec &pos, Location loc) {
+  checkWritable(store_, "set_pos", loc);
+  store_->pos[index_] = state().store(pos);
+}
 ParticleVec Particle::get_vel() const { return store_->vel[index_]; }
-void Particle::set_vel(const ParticleVec &vel) { store_->vel[index_] = state().store(vel); }
+void Particle::set_vel(const ParticleVec &vel, Location loc) {
+  checkWritable(store_, "set_vel", loc);
+  store_->vel[index_] = state().store(vel);
+}
 ParticleVec Particle::get_acc() const { return store_->acc[index_]; }
-void Particle::set_acc(const ParticleVec &acc) { store_->acc[index_] = state().store(acc); }
+void Particle::set_acc(const ParticleVec &acc, Location loc) {
+  checkWritable(store_, "set_acc", loc);
+  store_->acc[index_] = state().store(acc);
+}
 double Particle::get_density() const { return store_->density[index_]; }
-void Particle::set_density(double density) { store_->density[index_] = state().store(density); }
+void Particle::set_density(double density, Location loc) {
+  checkWritable(store_, "set_density", loc);
+  store_->density[index_] = state().store(density);
+}
 double Particle::get_mass() const { return store_->mass[index_]; }
-void Particle::set_mass(double mass) { store_->mass[index_] = state().store(mass); }
+void Particle::set_mass(double mass, Location loc) {
+  checkWritable(store_, "set_mass", loc);
+  store_->mass[index_] = state().store(mass);
+}
 double Particle::get_smoothing_length() const { return store_->smoothingLength[index_]; }
-void Particle::set_smoothing_length(double h) {
+void Particle::set_smoothing_length(double h, Location loc) {
+  checkWritable(store_, "set_smoothing_length", loc);
   store_->smoothingLength[index_] = state().store(h);
 }
 
@@ -49,6 +78,7 @@ double Particle::get_force_scalar(const std::string &name, Location loc) const {
 }
 
 void Particle::set_force_scalar(const std::string &name, double value, Location loc) {
+  checkWritable(store_, "set_force_scalar", loc);
   std::size_t slot = state().force(name, false, loc).slot;
   column(store_->scalars, slot, store_->size())[index_] = state().store(value);
 }
@@ -58,6 +88,7 @@ ParticleVec Particle::get_force_vector(const std::string &name, Location loc) co
 }
 
 void Particle::set_force_vector(const std::string &name, const ParticleVec &value, Location loc) {
+  checkWritable(store_, "set_force_vector", loc);
   std::size_t slot = state().force(name, true, loc).slot;
   column(store_->vectors, slot, store_->size())[index_] = state().store(value);
 }

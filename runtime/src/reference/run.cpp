@@ -50,6 +50,7 @@ double cellSize(const detail::SearchRule &rule, const detail::ParticleStore &sna
 void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, const detail::SearchRule &rule,
                     const detail::Box &box, const std::string &where) {
   detail::ParticleStore snapshot = live;
+  snapshot.neighbours = true;
   detail::CellList<dimensions> cells;
   cells.build(snapshot.pos, snapshot.id, cellSize(rule, snapshot, box, where));
   std::vector<std::size_t> indices;

@@ -26,6 +26,8 @@ struct ParticleStore {
   /// Force columns by slot; a column shorter than the store reads as zeros.
   std::vector<std::vector<double>> scalars;
   std::vector<std::vector<ParticleVec>> vectors;
+  /// A force kernel's snapshot, read through neighbour handles: not writable.
+  bool neighbours = false;
 
   std::size_t size() const { return id.size(); }
 };
