@@ -6,6 +6,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <exception>
+#include <limits>
 #include <vector>
 
 namespace wash::openmp {
@@ -21,6 +23,30 @@ inline std::size_t chunkFor(std::size_t n) {
   return std::max<std::size_t>(256, n / (64 * std::size_t(omp_get_max_threads())));
 }
 
+/// The exception a particle loop's body threw at the smallest position, kept
+/// to be rethrown after the parallel region: one escaping the region would
+/// end the program with std::terminate (SIGABRT) instead of the message and
+/// exit status a serial run gives. The smallest position is the one a serial
+/// loop stops at, so the message is the same at every thread count.
+class FirstError {
+public:
+  void capture(std::size_t position) {
+#pragma omp critical(wash_first_error)
+    if (position < position_) {
+      position_ = position;
+      error_ = std::current_exception();
+    }
+  }
+  void rethrow() const {
+    if (error_)
+      std::rethrow_exception(error_);
+  }
+
+private:
+  std::size_t position_ = std::numeric_limits<std::size_t>::max();
+  std::exception_ptr error_;
+};
+
 /// The particle loop of the OpenMP backend (backend.hpp makes it a backend type).
 struct Loop {
   static constexpr const char *name = "openmp";
@@ -30,16 +56,23 @@ struct Loop {
   /// every call did. Each call writes only particle i (the translator checked),
   /// so no atomics are needed, and the result does not depend on the thread
   /// count. Dynamic chunks even out uneven neighbour counts; particles are
-  /// cell-sorted, so a chunk is a compact region.
+  /// cell-sorted, so a chunk is a compact region. An exception from the body
+  /// is rethrown once the loop is over (FirstError).
   template <typename Body>
   static bool forEachParticleChecked(const std::vector<backend::Index> &rows, Body body) {
     const std::size_t n = rows.size();
     bool all = true;
+    FirstError error;
 #pragma omp parallel for schedule(dynamic, chunkFor(n)) reduction(&& : all)
     for (std::size_t k = 0; k < n; ++k) {
-      const bool finite = body(rows[k]);
-      all = all && finite;
+      try {
+        const bool finite = body(rows[k]);
+        all = all && finite;
+      } catch (...) {
+        error.capture(k);
+      }
     }
+    error.rethrow();
     return all;
   }
 
