@@ -59,6 +59,11 @@ bool Run::frameDue(std::uint64_t step) const {
   return detail::frameDue(programOptions(), step, steps_);
 }
 
+void Run::reserve(const Frame &frame) {
+  if (output_)
+    output_->reserve(frameBytesEstimate(frame));
+}
+
 void Run::write(std::uint64_t step, const Frame &frame) {
   if (output_)
     output_->writeFrame(step, frame);

@@ -1,7 +1,12 @@
 #include <wash/detail/run_output.hpp>
 #include <wash/detail/writers.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -11,33 +16,151 @@ namespace fs = std::filesystem;
 namespace wash::detail {
 namespace {
 
+/// Where a file is written before it is renamed into place: beside it, so on
+/// the same file system, and never a name a frame or dump could have.
+std::string partialPath(const std::string &path) { return path + ".wash-partial"; }
+
+std::string reason(int error) { return error ? std::strerror(error) : "unknown error"; }
+
+/// Writes a file whole or not at all: into partialPath(path), renamed onto
+/// path once every byte is out. On failure (a full disk, say) the partial file
+/// is removed, so no truncated frame is left looking like a frame.
+/// Whether `path` exists and is not a regular file (a device such as
+/// /dev/stdout, a pipe): written in place, as nothing can be renamed onto it.
+bool special(const std::string &path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
+}
+
 template <typename WriteFn> void writeFile(const std::string &path, WriteFn write) {
-  std::ofstream out(path, std::ios::binary);
+  const bool inPlace = special(path);
+  const std::string partial = inPlace ? path : partialPath(path);
+  std::ofstream out(partial, std::ios::binary);
   if (!out)
-    throw RunError("cannot open '" + path + "' for writing");
+    throw RunError("cannot open '" + path + "' for writing: " + reason(errno));
+  errno = 0;
   write(out);
   out.flush();
-  if (!out)
-    throw RunError("error while writing '" + path + "'");
+  out.close();
+  const int error = errno;
+  std::error_code ec;
+  if (!out) {
+    if (inPlace)
+      throw RunError("error while writing '" + path + "': " + reason(error));
+    fs::remove(partial, ec);
+    throw RunError("error while writing '" + path + "': " + reason(error) +
+                   " (the partial file was removed)");
+  }
+  if (inPlace)
+    return;
+  fs::rename(partial, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(partial, ignored);
+    throw RunError("cannot write '" + path + "': " + ec.message());
+  }
+}
+
+/// Creates `path` with `bytes` of disk space allocated, then removes it: the
+/// run's writes there then have a directory, permission and (at the time)
+/// the space. An empty string if they do, else why not.
+std::string probe(const std::string &path, std::uint64_t bytes) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0)
+    return reason(errno);
+  int error = bytes ? ::posix_fallocate(fd, 0, off_t(bytes)) : 0;
+  if (::close(fd) != 0 && !error)
+    error = errno;
+  std::error_code ec;
+  fs::remove(path, ec);
+  return error ? reason(error) : "";
+}
+
+std::string gib(std::uint64_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", double(bytes) / double(1ull << 30));
+  return text;
 }
 
 } // namespace
 
+RunStage &runStage() {
+  static RunStage stage;
+  return stage;
+}
+
+std::string RunStage::describe() const {
+  if (!begun)
+    return "while setting up the run (main, init kernels and create_particle)";
+  const std::string when = step == 0      ? "before the first step"
+                           : step > steps ? "after the last step"
+                                          : "in step " + std::to_string(step);
+  return when + ", with " + std::to_string(particles) + " particles";
+}
+
+RunError outOfMemory(const std::string &what, std::uint64_t count, std::uint64_t bytesEach) {
+  return RunError("out of memory allocating " + std::to_string(count) + " particles x " +
+                  std::to_string(bytesEach) + " bytes (" + gib(count * bytesEach) + " GiB) for " +
+                  what);
+}
+
+std::string checkOutputName(const std::string &name) {
+  if (name.find('/') == std::string::npos && name.find('\0') == std::string::npos)
+    return "";
+  return "output file name '" + name +
+         "' is not a plain file name: output files stay inside the output directory (--out), so "
+         "the names given to set_simulation_name and set_output_file_name cannot contain '/'";
+}
+
 RunOutput::RunOutput(const RunOptions &options, std::string baseName)
     : options_(options), baseName_(std::move(baseName)) {
+  if (std::string bad = checkOutputName(baseName_); !bad.empty())
+    throw RunError(bad);
   std::error_code ec;
   fs::create_directories(options_.outDir, ec);
   if (ec || !fs::is_directory(options_.outDir))
     throw RunError("cannot create output directory '" + options_.outDir +
                    "': " + (ec ? ec.message() : "not a directory"));
-  // Fail before the run, not after hours of it.
-  std::string probe = (fs::path(options_.outDir) / ".wash-write-test").string();
-  {
-    std::ofstream out(probe);
-    if (!out)
-      throw RunError("output directory '" + options_.outDir + "' is not writable");
+  // Fail before the run, not after hours of it: every path the run will
+  // write (reserve() checks the space once the frame's size is known).
+  if (probe(probePath(), 0) != "")
+    throw RunError("output directory '" + options_.outDir + "' is not writable");
+  if (!options_.dumpPath.empty()) {
+    if (fs::is_directory(options_.dumpPath, ec))
+      throw RunError("cannot write the dump to '" + options_.dumpPath + "': it is a directory");
+    if (special(options_.dumpPath)) {
+      if (::access(options_.dumpPath.c_str(), W_OK) != 0)
+        throw RunError("cannot write the dump to '" + options_.dumpPath + "': " + reason(errno));
+    } else if (std::string bad = probe(partialPath(options_.dumpPath), 0); !bad.empty())
+      throw RunError("cannot write the dump to '" + options_.dumpPath + "': " + bad);
   }
-  fs::remove(probe, ec);
+}
+
+std::string RunOutput::probePath() const {
+  return (fs::path(options_.outDir) / ".wash-write-test").string();
+}
+
+std::uint64_t frameBytesEstimate(const Frame &frame) {
+  // A value takes about 16 characters in either format (17 significant
+  // digits, fewer for round numbers); ids, VTK connectivity and offsets fewer.
+  std::uint64_t values = 0;
+  for (const Column &column : frame.columns)
+    values += column.values.size();
+  return 16 * values + 24 * std::uint64_t(frame.size()) + 4096;
+}
+
+void RunOutput::reserve(std::uint64_t bytes) {
+  if (std::string bad = probe(probePath(), bytes); !bad.empty())
+    throw RunError("cannot write frames to '" + options_.outDir + "': reserving " +
+                   std::to_string(bytes) + " bytes (" + gib(bytes) +
+                   " GiB, about one frame) failed: " + bad);
+  if (options_.dumpPath.empty() || special(options_.dumpPath))
+    return;
+  if (std::string bad = probe(partialPath(options_.dumpPath), bytes); !bad.empty())
+    throw RunError("cannot write the dump to '" + options_.dumpPath + "': reserving " +
+                   std::to_string(bytes) + " bytes (" + gib(bytes) +
+                   " GiB, about one frame) failed: " + bad);
 }
 
 bool frameDue(const RunOptions &options, std::uint64_t step, std::uint64_t lastStep) {

@@ -3,7 +3,8 @@
 // that fails on one particle, which no translation can see, by throwing an
 // exception of the program's own: "update" or "force" (anything else: none,
 // the run completes). The second argument is the particle count (default
-// 400; a huge one runs out of memory in create_particle).
+// 400; a huge one runs out of memory in create_particle), the third the
+// simulation name.
 #include <wash/wash.hpp>
 
 #include <cmath>
@@ -37,6 +38,8 @@ int main(int argc, char **argv) {
   wash::set_influence_radius(0.015);
   wash::add_variable("fail_in", where == "update" ? 1.0 : where == "force" ? 2.0 : 0.0);
   wash::add_variable("count", argc > 2 ? std::atof(argv[2]) : 400.0);
+  if (argc > 3) // where output goes: test/e2e/output_faults.sh
+    wash::set_simulation_name(argv[3]);
   wash::add_force("count", 1);
   wash::add_init_kernel(&Spawn);
   wash::add_update_kernel(&Update);

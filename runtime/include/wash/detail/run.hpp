@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,22 +63,29 @@ public:
   double support() const { return *runSettings().search.support; }
   const Box &box() const { return runSettings().box; }
 
-  /// After the init kernels: prints the header, writes frame 0 if due.
+  /// After the init kernels: prints the header, checks that there is room for
+  /// a frame where the run writes (before any step), writes frame 0 if due.
+  /// Every rank builds the frame (it may be collective).
   template <typename FrameFn> void begin(std::size_t particles, FrameFn frame) {
     started(particles);
+    runStage() = {particles, 0, true, steps_};
+    const Frame first = built(frame);
+    reserve(first);
     if (frameDue(0))
-      write(0, frame());
+      write(0, first);
+    runStage().step = 1;
     stepStart_ = Clock::now();
   }
   /// After every kernel of a step.
   template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
     stepSeconds_ += std::chrono::duration<double>(Clock::now() - stepStart_).count();
     if (runSettings().stopRequested)
-      steps_ = step; // wash::stop(): this step is the last, and written as such
+      runStage().steps = steps_ = step; // wash::stop(): this step is the last, and written as such
     if (frameDue(step))
-      write(step, frame());
+      write(step, built(frame));
     if (progress_)
       progress_->update(step);
+    runStage().step = step + 1;
     stepStart_ = Clock::now();
   }
   void finish(const Frame &finalFrame);
@@ -100,8 +108,19 @@ public:
   void checkFinite(const Frame &frame, std::uint64_t step, const std::string &kernel) const;
 
 private:
+  /// frame(), with an out-of-memory error that says what was being built.
+  template <typename FrameFn> static Frame built(FrameFn frame) {
+    try {
+      return frame();
+    } catch (const std::bad_alloc &) {
+      throw RunError("out of memory building an output frame of " +
+                     std::to_string(runStage().particles) + " particles (" + runStage().describe() +
+                     ")");
+    }
+  }
   void started(std::size_t particles);
   bool frameDue(std::uint64_t step) const;
+  void reserve(const Frame &frame);
   void write(std::uint64_t step, const Frame &frame);
   template <typename T> static double firstBad(const T &v) { return double(v); }
   template <typename T, int D> static double firstBad(const Vec<T, D> &v) {

@@ -27,14 +27,45 @@ struct UsageError : RunError {
   using RunError::RunError;
 };
 
+/// The error for a std::bad_alloc while allocating `count` items of `bytesEach`
+/// bytes for `what`: "out of memory allocating N particles x M bytes (X GiB)
+/// for ...", so that a run too large for the machine says how large it was.
+RunError outOfMemory(const std::string &what, std::uint64_t count, std::uint64_t bytesEach);
+
+/// How far the run has got, for the message of a failure nothing else names.
+struct RunStage {
+  std::uint64_t particles = 0;
+  std::uint64_t step = 0; ///< 0: set-up and init kernels
+  bool begun = false;     ///< the init kernels are done
+  std::uint64_t steps = 0;
+  /// "in step 3 (1000 particles)", "before the first step", ...
+  std::string describe() const;
+};
+RunStage &runStage();
+
 /// With --output-every K > 0: step 0, every K-th step and the last step.
 /// With K = 0: the last step only.
 bool frameDue(const RunOptions &options, std::uint64_t step, std::uint64_t lastStep);
 
+/// Why `name` cannot be the base name of output files (with a '/' it could
+/// leave the output directory: "../x", "/abs/x"), or an empty string if it can.
+std::string checkOutputName(const std::string &name);
+
+/// About the size of `frame` written as VTK or CSV, for RunOutput::reserve.
+std::uint64_t frameBytesEstimate(const Frame &frame);
+
+/// Every file is written to a temporary file beside it and renamed into place,
+/// so a failed write (a full disk) leaves no truncated file behind.
 class RunOutput {
 public:
-  /// Creates the output directory and checks that it is writable (throws RunError).
+  /// Checks the base name, creates the output directory and checks that it
+  /// and the --dump file's directory are writable (throws RunError).
   RunOutput(const RunOptions &options, std::string baseName);
+
+  /// Checks that `bytes` (about a frame) can be allocated in the output
+  /// directory and beside the --dump file (throws RunError): a disk that is
+  /// already full stops the run before its first step.
+  void reserve(std::uint64_t bytes);
 
   bool frameDue(std::uint64_t step, std::uint64_t lastStep) const {
     return detail::frameDue(options_, step, lastStep);
@@ -47,6 +78,7 @@ public:
 
 private:
   std::string framePath(std::uint64_t step) const;
+  std::string probePath() const;
 
   RunOptions options_;
   std::string baseName_;
