@@ -3,6 +3,7 @@
 #include <wash/detail/run_settings.hpp>
 
 #include <cstdio>
+#include <new>
 #include <string>
 
 namespace wash::detail {
@@ -23,6 +24,12 @@ int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
   } catch (const UsageError &e) {
     std::fflush(stdout);
     std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc &) {
+    // An allocation no wash error names (most do: outOfMemory): say when.
+    std::fflush(stdout);
+    std::fprintf(stderr, "%s: error: out of memory (std::bad_alloc) %s\n", program.c_str(),
+                 runStage().describe().c_str());
     return 1;
   } catch (const std::exception &e) {
     std::fflush(stdout);

@@ -10,6 +10,7 @@
 
 #include <cstdlib>
 #include <memory>
+#include <new>
 
 namespace wash {
 
@@ -82,13 +83,21 @@ Particle &create_particle(double density, double mass, double smoothingLength,
   if (!s.inInitKernel)
     usageError(loc, "create_particle can only be called from an init kernel");
   auto &store = s.particles;
-  store.id.push_back(store.size());
-  store.pos.push_back(s.store(pos));
-  store.vel.push_back(s.store(vel));
-  store.acc.push_back(ParticleVec{});
-  store.density.push_back(s.store(density));
-  store.mass.push_back(s.store(mass));
-  store.smoothingLength.push_back(s.store(smoothingLength));
+  const std::size_t index = store.size();
+  try {
+    store.id.push_back(index);
+    store.pos.push_back(s.store(pos));
+    store.vel.push_back(s.store(vel));
+    store.acc.push_back(ParticleVec{});
+    store.density.push_back(s.store(density));
+    store.mass.push_back(s.store(mass));
+    store.smoothingLength.push_back(s.store(smoothingLength));
+  } catch (const std::bad_alloc &) {
+    // The builtin columns; forces are allocated when first written.
+    const std::size_t bytesEach =
+        sizeof(std::uint64_t) + 3 * sizeof(ParticleVec) + 3 * sizeof(double);
+    throw detail::outOfMemory("the particle store (create_particle)", index + 1, bytesEach);
+  }
   static Particle created(nullptr, 0);
   created = Particle(&store, store.size() - 1);
   return created;

@@ -1,6 +1,8 @@
 //===- particle.cpp - Particle handles of the reference runtime --------===//
 #include "state.hpp"
 
+#include <new>
+
 namespace wash {
 
 using detail::ParticleStore;
@@ -56,10 +58,15 @@ namespace {
 
 /// Column `slot` of `columns`, grown to the store's size (new entries zero).
 template <typename T>
-std::vector<T> &column(std::vector<std::vector<T>> &columns, std::size_t slot, std::size_t size) {
-  if (columns.size() <= slot)
-    columns.resize(slot + 1);
-  columns[slot].resize(size, T{});
+std::vector<T> &column(std::vector<std::vector<T>> &columns, std::size_t slot, std::size_t size,
+                       const std::string &name) {
+  try {
+    if (columns.size() <= slot)
+      columns.resize(slot + 1);
+    columns[slot].resize(size, T{});
+  } catch (const std::bad_alloc &) {
+    throw detail::outOfMemory("force '" + name + "'", size, sizeof(T));
+  }
   return columns[slot];
 }
 
@@ -80,7 +87,7 @@ double Particle::get_force_scalar(const std::string &name, Location loc) const {
 void Particle::set_force_scalar(const std::string &name, double value, Location loc) {
   checkWritable(store_, "set_force_scalar", loc);
   std::size_t slot = state().force(name, false, loc).slot;
-  column(store_->scalars, slot, store_->size())[index_] = state().store(value);
+  column(store_->scalars, slot, store_->size(), name)[index_] = state().store(value);
 }
 
 ParticleVec Particle::get_force_vector(const std::string &name, Location loc) const {
@@ -90,7 +97,7 @@ ParticleVec Particle::get_force_vector(const std::string &name, Location loc) co
 void Particle::set_force_vector(const std::string &name, const ParticleVec &value, Location loc) {
   checkWritable(store_, "set_force_vector", loc);
   std::size_t slot = state().force(name, true, loc).slot;
-  column(store_->vectors, slot, store_->size())[index_] = state().store(value);
+  column(store_->vectors, slot, store_->size(), name)[index_] = state().store(value);
 }
 
 } // namespace wash

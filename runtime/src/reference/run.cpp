@@ -14,6 +14,8 @@
 #include <wash/detail/run.hpp>
 #include <wash/detail/search.hpp>
 
+#include <new>
+
 namespace wash {
 
 using detail::Kernel;
@@ -22,6 +24,12 @@ using detail::runSettings;
 using detail::state;
 
 namespace {
+
+/// The bytes of one particle in `store`, every column counted.
+std::size_t storeBytes(const detail::ParticleStore &store) {
+  return sizeof(std::uint64_t) + 3 * sizeof(ParticleVec) + 3 * sizeof(double) +
+         store.scalars.size() * sizeof(double) + store.vectors.size() * sizeof(ParticleVec);
+}
 
 /// Particle i's search radius: the influence radius, or its support radius.
 double searchRadius(const detail::SearchRule &rule, const detail::ParticleStore &snapshot,
@@ -49,10 +57,19 @@ double cellSize(const detail::SearchRule &rule, const detail::ParticleStore &sna
 
 void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, const detail::SearchRule &rule,
                     const detail::Box &box, const std::string &where) {
-  detail::ParticleStore snapshot = live;
-  snapshot.neighbours = true;
+  detail::ParticleStore snapshot;
   detail::CellList<dimensions> cells;
-  cells.build(snapshot.pos, snapshot.id, cellSize(rule, snapshot, box, where));
+  try {
+    snapshot = live;
+    cells.build(snapshot.pos, snapshot.id, cellSize(rule, snapshot, box, where));
+  } catch (const std::bad_alloc &) {
+    snapshot = {}; // room for the message
+    cells = {};
+    throw detail::outOfMemory("the neighbours' snapshot and cell list (" +
+                                  where.substr(0, where.size() - 2) + ")",
+                              live.size(), storeBytes(live));
+  }
+  snapshot.neighbours = true;
   std::vector<std::size_t> indices;
   std::vector<ParticleVec> images;
   std::vector<Particle> neighbours;
@@ -136,7 +153,15 @@ void start() {
                                       .floatStorage = std::nullopt,
                                       .smoothingLengthSearch = std::nullopt},
                   /*writes=*/true);
-  auto frame = [&s] { return s.frame(s.particles); };
+  // The reference checks every value after every kernel on a frame of the state.
+  auto frame = [&s] {
+    try {
+      return s.frame(s.particles);
+    } catch (const std::bad_alloc &) {
+      throw detail::outOfMemory("a frame of the state (output and finiteness checks)",
+                                s.particles.size(), storeBytes(s.particles));
+    }
+  };
   for (const Kernel &k : s.kernels)
     if (k.kind == Kernel::Init) {
       runKernel(k, s, 0);

@@ -12,6 +12,14 @@ std::string translationText(const CodePlan &Plan) {
          ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") + "};\n";
 }
 
+void emitParticleBytes(std::ostream &OS, const CodePlan &Plan) {
+  OS << "/// The bytes of one particle's stored columns, for out-of-memory messages.\n"
+     << "constexpr std::size_t particleBytes = 0";
+  for (const Field *F : Plan.Stored)
+    OS << "\n    + sizeof(P." << Plan.Member.at(F->Name) << "[0])";
+  OS << ";\n\n";
+}
+
 void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
   OS << "Self &create_particle(double density, double mass, double smoothing_length,\n"
      << "                      const wash::ParticleVec &pos, const wash::ParticleVec &vel) {\n"
@@ -19,20 +27,25 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
      << "  const std::size_t index = P.size();\n"
      << "  if (index >= std::size_t(std::numeric_limits<Index>::max()))\n"
      << "    throw " << rt::RunError << "(\"too many particles for this program's index type\");\n"
-     << "  created = Self{Index(index)};\n";
+     << "  created = Self{Index(index)};\n"
+     << "  try {\n";
   for (const Field *F : Plan.Stored) {
     // The builtins create_particle sets take its parameter of the same name
     // (WashApi.def); everything else starts at zero.
     const BuiltinField *B = F->Origin == FieldOrigin::Builtin ? builtinField(F->Name) : nullptr;
     const std::string Type = F->Kind == ForceKind::Vector ? "Stored" : "Real";
-    OS << "  P." << Plan.Member.at(F->Name) << ".push_back(";
+    OS << "    P." << Plan.Member.at(F->Name) << ".push_back(";
     if (B && B->Kind == FieldKind::Id)
       OS << "index";
     else
       OS << Type << "(" << (B && B->Created ? F->Name : "") << ")";
     OS << ");\n";
   }
-  OS << "  return created;\n}\n\n";
+  // Out of memory says how much the store needed (a bare std::bad_alloc does not).
+  OS << "  } catch (const std::bad_alloc &) {\n"
+     << "    throw " << rt::OutOfMemory
+     << "(\"the particle store (create_particle)\", index + 1, particleBytes);\n  }\n"
+     << "  return created;\n}\n\n";
 }
 
 void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
@@ -167,7 +180,7 @@ std::string neighbourTableDeclaration(const CodePlan &Plan) {
 std::string neighbourTableBuild(const CodePlan &Plan) {
   if (!Plan.SmoothingSearch)
     return "";
-  return "  table.build(backend.grid(), P.pos, P.id, " + Plan.readColumn("smoothing_length") +
+  return "    table.build(backend.grid(), P.pos, P.id, " + Plan.readColumn("smoothing_length") +
          ", at, backend.owned());\n";
 }
 

@@ -101,14 +101,19 @@ std::string emitDriver(const Model &M, const CodePlan &Plan,
      << " backend) =====\n\n"
      << "namespace wash_gen {\nnamespace {\n"
      << "Backend backend; // which rows are real particles, the cell grid, images, halos\n"
-     << neighbourTableDeclaration(Plan) << "\n"
-     << "/// A neighbour search (docs/semantics.md): `fields` visits the columns the\n"
+     << neighbourTableDeclaration(Plan) << "\n";
+  emitParticleBytes(OS, Plan);
+  OS << "/// A neighbour search (docs/semantics.md): `fields` visits the columns the\n"
      << "/// copies neighbours read (periodic images, halos) must carry.\n"
      << "template <typename Fields>\n"
      << "void search(const " << rt::SearchGeometry << " &at, const " << rt::Box << " &box,\n"
      << "            Fields fields) {\n"
-     << "  backend.search(P, at, box, fields);\n"
-     << neighbourTableBuild(Plan) << "}\n\n"
+     << "  try {\n"
+     << "    backend.search(P, at, box, fields);\n"
+     << neighbourTableBuild(Plan) << "  } catch (const std::bad_alloc &) {\n"
+     << "    throw " << rt::OutOfMemory
+     << "(\"the neighbour search (cell sort, images, lists)\", P.size(), particleBytes);\n"
+     << "  }\n}\n\n"
      << "/// Every particle's output columns, on the process that writes them.\n"
      << rt::Frame << " frame() {\n"
      << "  " << rt::FrameBuilder << " f(" << Plan.Dim << ", P.id, &backend.owned());\n";

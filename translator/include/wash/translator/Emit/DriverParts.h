@@ -20,6 +20,9 @@ namespace wash::tr {
 /// member named.
 std::string translationText(const CodePlan &Plan);
 
+/// `particleBytes`: the size of one particle in the stored columns.
+void emitParticleBytes(std::ostream &OS, const CodePlan &Plan);
+
 /// `create_particle`: appends one particle to every column.
 void emitCreateParticle(std::ostream &OS, const CodePlan &Plan);
 
