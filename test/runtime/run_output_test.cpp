@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -97,5 +98,54 @@ TEST(RunOutput, UnusableDirectoryIsAClearError) {
     FAIL() << "no error";
   } catch (const RunError &e) {
     EXPECT_NE(std::string(e.what()).find("cannot create output directory"), std::string::npos);
+  }
+}
+
+TEST(RunOutput, NamesWithASlashAreRefused) {
+  EXPECT_EQ(checkOutputName("sim"), "");
+  EXPECT_EQ(checkOutputName(".."), ""); // "out/.._000001.vtp" is still inside
+  for (const char *name : {"../x", "/abs/x", "sub/x"})
+    EXPECT_NE(checkOutputName(name).find("is not a plain file name"), std::string::npos) << name;
+  TempDir dir;
+  RunOptions o;
+  o.outDir = (dir.path / "out").string();
+  EXPECT_THROW(RunOutput(o, "../escaped"), RunError);
+}
+
+TEST(RunOutput, WritesLeaveNoPartialFiles) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = dir.path.string();
+  o.dumpPath = (dir.path / "dump.csv").string();
+  RunOutput out(o, "sim");
+  out.reserve(1 << 20);
+  out.writeFrame(0, tinyFrame());
+  out.finish(tinyFrame());
+  std::vector<std::string> names;
+  for (const auto &entry : fs::directory_iterator(dir.path))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"dump.csv", "sim.pvd", "sim_000000.vtp"}));
+}
+
+TEST(RunOutput, UnusableDumpPathIsFoundAtStartUp) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = dir.path.string();
+  o.dumpPath = (dir.path / "missing" / "dump.csv").string();
+  try {
+    RunOutput out(o, "sim");
+    FAIL() << "no error";
+  } catch (const RunError &e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write the dump to"), std::string::npos);
+  }
+}
+
+TEST(RunOutput, FailedWriteSaysWhy) {
+  try {
+    writeCsvFile(tinyFrame(), "/dev/full");
+    FAIL() << "no error";
+  } catch (const RunError &e) {
+    EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
   }
 }

@@ -22,9 +22,6 @@ std::string partialPath(const std::string &path) { return path + ".wash-partial"
 
 std::string reason(int error) { return error ? std::strerror(error) : "unknown error"; }
 
-/// Writes a file whole or not at all: into partialPath(path), renamed onto
-/// path once every byte is out. On failure (a full disk, say) the partial file
-/// is removed, so no truncated frame is left looking like a frame.
 /// Whether `path` exists and is not a regular file (a device such as
 /// /dev/stdout, a pipe): written in place, as nothing can be renamed onto it.
 bool special(const std::string &path) {
@@ -33,6 +30,9 @@ bool special(const std::string &path) {
   return !ec && fs::exists(status) && !fs::is_regular_file(status) && !fs::is_directory(status);
 }
 
+/// Writes a file whole or not at all: into partialPath(path), renamed onto
+/// path once every byte is out. On failure (a full disk, say) the partial file
+/// is removed, so no truncated frame is left looking like a frame.
 template <typename WriteFn> void writeFile(const std::string &path, WriteFn write) {
   const bool inPlace = special(path);
   const std::string partial = inPlace ? path : partialPath(path);
@@ -70,6 +70,8 @@ std::string probe(const std::string &path, std::uint64_t bytes) {
   if (fd < 0)
     return reason(errno);
   int error = bytes ? ::posix_fallocate(fd, 0, off_t(bytes)) : 0;
+  if (error == EOPNOTSUPP || error == ENOSYS || error == EINVAL)
+    error = 0; // a file system that cannot tell: the writes will
   if (::close(fd) != 0 && !error)
     error = errno;
   std::error_code ec;
