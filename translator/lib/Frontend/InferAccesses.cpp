@@ -37,24 +37,26 @@ public:
     if (K.Kind == KernelKind::Force)
       Params.push_back(RoleList);
     analyse(Def, Params);
+    reportEscapedLambdas();
   }
 
 private:
   RoleEvaluator roles() {
     return RoleEvaluator(
-        [this](const ValueDecl *VD) -> Roles {
-          // Innermost first: lambda bodies see their enclosing function's variables.
-          for (auto It = Frames.rbegin(); It != Frames.rend(); ++It)
-            if (auto F = (*It)->Vars.find(VD); F != (*It)->Vars.end())
-              return F->second;
-          return 0;
-        },
+        [this](const ValueDecl *VD) { return varRoles(VD); },
         [this](const CallExpr *CE) -> std::optional<Roles> {
           auto It = Frames.back()->Calls.find(CE);
           return It == Frames.back()->Calls.end() ? std::nullopt : std::optional(It->second);
         });
   }
   Roles roleOf(const Expr *E) { return roles().of(E); }
+  Roles varRoles(const ValueDecl *VD) const {
+    // Innermost first: lambda bodies see their enclosing function's variables.
+    for (auto It = Frames.rbegin(); It != Frames.rend(); ++It)
+      if (auto F = (*It)->Vars.find(VD); F != (*It)->Vars.end())
+        return F->second;
+    return 0;
+  }
 
   Roles analyse(const FunctionDecl *FD, const std::vector<Roles> &Params) {
     auto Key = std::make_pair(FD->getCanonicalDecl(), Params);
@@ -65,6 +67,8 @@ private:
       return 0;
     }
     --Budget;
+    if (isLambda(FD))
+      AnalysedLambdas.insert(cast<CXXMethodDecl>(FD)->getParent());
     Frame F;
     for (unsigned I = 0; I < FD->getNumParams() && I < Params.size(); ++I)
       F.Vars[FD->getParamDecl(I)] = Params[I];
@@ -141,8 +145,14 @@ private:
     if (const auto *L = dyn_cast<LambdaExpr>(S)) {
       for (const Expr *Init : L->capture_inits())
         record(Init); // The body is analysed where the lambda is called.
+      if (usesParticle(L))
+        ParticleLambdas.push_back(L);
       return;
     }
+    if (const auto *CE = dyn_cast<CallExpr>(S))
+      DirectCallees.insert(CE->getCallee()->IgnoreParenImpCasts());
+    if (const auto *DRE = dyn_cast<DeclRefExpr>(S))
+      functionReference(DRE);
     for (const Stmt *Child : S->children())
       record(Child);
     if (const auto *DS = dyn_cast<DeclStmt>(S))
@@ -158,6 +168,10 @@ private:
   }
 
   void call(const CallExpr *CE);
+  bool usesParticle(const LambdaExpr *L);
+  void functionReference(const DeclRefExpr *DRE);
+  bool opaqueCallable(const CallExpr *CE);
+  void reportEscapedLambdas();
   void particleMethod(const CallExpr *CE, const FunctionDecl *FD);
   void libraryCall(const CallExpr *CE);
   void userCall(const CallExpr *CE, const FunctionDecl *FD);
@@ -181,6 +195,10 @@ private:
   std::map<std::pair<const FunctionDecl *, std::vector<Roles>>, Roles> Memo;
   std::set<std::tuple<std::string, Target, Mode, unsigned, unsigned>> Recorded;
   unsigned Budget = 20000;
+  // Escapes: particles reaching code the analysis does not follow.
+  std::set<const Expr *> DirectCallees;
+  std::vector<const LambdaExpr *> ParticleLambdas;
+  std::set<const CXXRecordDecl *> AnalysedLambdas;
 };
 
 void KernelAnalyser::call(const CallExpr *CE) {
@@ -213,8 +231,12 @@ void KernelAnalyser::call(const CallExpr *CE) {
              {kernelKindName(K.Kind), K.Function});
     return;
   }
-  if (isWashFunction(FD))
+  if (isWashFunction(FD)) {
+    // User code in namespace wash is not the API, but is not followed either.
+    if (!washCall(FD) && isUserCode(Ctx.getSourceManager(), FD) && anyParticleArg(CE))
+      D.report(DiagId::HelperInWashNamespace, CE->getBeginLoc(), {FD->getQualifiedNameAsString()});
     return;
+  }
   const auto *MD = dyn_cast<CXXMethodDecl>(FD);
   if (MD && MD->isVirtual() && !MD->hasAttr<FinalAttr>() &&
       !MD->getParent()->hasAttr<FinalAttr>() && anyParticleArg(CE)) {
@@ -306,6 +328,8 @@ static const LambdaExpr *lambdaOf(const Expr *E) {
 /// given: std::for_each(ns.begin(), ns.end(), [&](const Particle &n) {...})
 /// calls the lambda with what the other arguments hold.
 void KernelAnalyser::libraryCall(const CallExpr *CE) {
+  if (opaqueCallable(CE))
+    return;
   Roles Given = 0;
   for (const Expr *A : CE->arguments())
     Given |= derefRoles(roleOf(A)) | (roleOf(A) & (RoleOwn | RoleNeighbour));
@@ -328,6 +352,88 @@ void KernelAnalyser::libraryCall(const CallExpr *CE) {
       analyse(Op, Params);
     }
   }
+}
+
+/// A lambda capturing a particle variable or taking particle parameters.
+bool KernelAnalyser::usesParticle(const LambdaExpr *L) {
+  for (const LambdaCapture &C : L->captures())
+    if (C.capturesVariable())
+      if (const ValueDecl *VD = C.getCapturedVar();
+          VD && (involvesParticle(VD->getType()) || varRoles(VD)))
+        return true;
+  std::vector<const FunctionDecl *> Operators{L->getCallOperator()};
+  if (const FunctionTemplateDecl *T = L->getDependentCallOperator())
+    for (const FunctionDecl *Spec : T->specializations())
+      Operators.push_back(Spec);
+  for (const FunctionDecl *Op : Operators)
+    for (const ParmVarDecl *P : Op->parameters())
+      if (involvesParticle(P->getType()))
+        return true;
+  return false;
+}
+
+/// A function taking a particle, named other than as a call's callee: the
+/// calls made through the pointer or std::function are not followed.
+void KernelAnalyser::functionReference(const DeclRefExpr *DRE) {
+  const auto *FD = dyn_cast<FunctionDecl>(DRE->getDecl());
+  if (!FD || DirectCallees.count(DRE) || isWashFunction(FD) ||
+      !isUserCode(Ctx.getSourceManager(), FD))
+    return;
+  for (const ParmVarDecl *P : FD->parameters())
+    if (involvesParticle(P->getType())) {
+      D.report(DiagId::FunctionEscapes, DRE->getLocation(), {FD->getQualifiedNameAsString()});
+      return;
+    }
+}
+
+/// A particle handed to a callable the analysis cannot see into: a
+/// std::function's operator(), std::invoke(f, p)...; lambdas are followed.
+bool KernelAnalyser::opaqueCallable(const CallExpr *CE) {
+  bool GivesParticle = false;
+  unsigned First = 0;
+  const auto *OC = dyn_cast<CXXOperatorCallExpr>(CE);
+  bool CallsObject = OC && OC->getOperator() == OO_Call && OC->getNumArgs() > 0;
+  if (CallsObject && !lambdaOf(OC->getArg(0)))
+    First = 1;
+  else
+    CallsObject = false;
+  for (unsigned I = First; I < CE->getNumArgs(); ++I) {
+    const Expr *A = CE->getArg(I);
+    if (roleOf(A) & (RoleOwn | RoleNeighbour) || involvesParticle(A->getType()))
+      GivesParticle = true;
+  }
+  if (!GivesParticle)
+    return false;
+  bool Opaque = CallsObject;
+  for (unsigned I = First; I < CE->getNumArgs() && !Opaque; ++I) {
+    const Expr *A = CE->getArg(I);
+    QualType T = A->getType().getNonReferenceType();
+    if (lambdaOf(A))
+      continue;
+    if (T->isFunctionPointerType() || T->isFunctionType() || T->isMemberFunctionPointerType())
+      Opaque = true;
+    else if (const CXXRecordDecl *RD = T->getAsCXXRecordDecl();
+             RD && RD->hasDefinition() && !RD->isLambda())
+      for (const CXXMethodDecl *M : RD->methods())
+        if (M->getOverloadedOperator() == OO_Call)
+          Opaque = true;
+  }
+  if (!Opaque)
+    return false;
+  const FunctionDecl *FD = CE->getDirectCallee();
+  std::string Name = CallsObject ? OC->getArg(0)->getType().getNonReferenceType().getUnqualifiedType().getAsString(
+                                       Ctx.getPrintingPolicy())
+                                 : FD->getQualifiedNameAsString();
+  D.report(DiagId::CallableEscapes, CE->getBeginLoc(), {Name});
+  return true;
+}
+
+/// Lambdas using a particle that no call the analysis followed ran: stored
+/// in a std::thread, a std::function called elsewhere...
+void KernelAnalyser::reportEscapedLambdas() {
+  for (const LambdaExpr *L : ParticleLambdas)
+    if (!AnalysedLambdas.count(L->getLambdaClass()))
+      D.report(DiagId::LambdaEscapes, L->getBeginLoc());
 }
 
 void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
