@@ -30,6 +30,11 @@ public:
       : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc) {}
 
   void run(const FunctionDecl *Def) {
+    // The driver calls the kernel by its plain name, with no template arguments.
+    if (Def->getPrimaryTemplate() || Def->getTemplateSpecializationKind() != TSK_Undeclared) {
+      D.report(DiagId::KernelIsTemplate, KernelLoc, {K.Function});
+      return;
+    }
     std::vector<Roles> Params;
     if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
         K.Kind == KernelKind::Reduction)
@@ -165,13 +170,17 @@ private:
       Frames.back()->Return |= roleOf(RS->getRetValue());
     if (const auto *CE = dyn_cast<CallExpr>(S))
       call(CE);
+    globalWrite(S);
   }
 
   void call(const CallExpr *CE);
   bool usesParticle(const LambdaExpr *L);
   void functionReference(const DeclRefExpr *DRE);
   bool opaqueCallable(const CallExpr *CE);
+  bool particleThroughTemplate(const FunctionDecl *FD, const std::vector<Roles> &Params,
+                               SourceLocation Loc);
   void reportEscapedLambdas();
+  void globalWrite(const Stmt *S);
   void particleMethod(const CallExpr *CE, const FunctionDecl *FD);
   void libraryCall(const CallExpr *CE);
   void userCall(const CallExpr *CE, const FunctionDecl *FD);
@@ -349,9 +358,88 @@ void KernelAnalyser::libraryCall(const CallExpr *CE) {
       std::vector<Roles> Params;
       for (const ParmVarDecl *P : Op->parameters())
         Params.push_back(involvesParticle(P->getType()) ? Given : 0);
-      analyse(Op, Params);
+      if (!particleThroughTemplate(Op, Params, CE->getBeginLoc()))
+        analyse(Op, Params);
     }
   }
+}
+
+/// The global or static variable E names, through members and subscripts.
+static const VarDecl *storageOf(const Expr *E) {
+  for (unsigned Depth = 0; E && Depth < 64; ++Depth) {
+    E = E->IgnoreParenImpCasts();
+    if (const auto *M = dyn_cast<MemberExpr>(E)) {
+      if (const auto *VD = dyn_cast<VarDecl>(M->getMemberDecl())) // Static member.
+        return VD->hasGlobalStorage() ? VD : nullptr;
+      E = M->isArrow() ? nullptr : M->getBase();
+    } else if (const auto *A = dyn_cast<ArraySubscriptExpr>(E)) {
+      E = A->getBase()->IgnoreParenImpCasts();
+      if (!E->getType()->isArrayType())
+        return nullptr; // Through a pointer: not this variable's storage.
+    } else if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(E);
+               OC && OC->getOperator() == OO_Subscript) {
+      E = OC->getArg(0); // v[i] of a global container.
+    } else if (const auto *DRE = dyn_cast<DeclRefExpr>(E)) {
+      const auto *VD = dyn_cast<VarDecl>(DRE->getDecl());
+      return VD && VD->hasGlobalStorage() ? VD : nullptr;
+    } else {
+      return nullptr;
+    }
+  }
+  return nullptr;
+}
+
+/// Per-particle kernels writing a global or static variable: the result
+/// depends on the order particles are visited in, which backends and ranks
+/// do not share. Reading globals (set in main) is fine.
+void KernelAnalyser::globalWrite(const Stmt *S) {
+  if (K.Kind != KernelKind::Update && K.Kind != KernelKind::Force &&
+      K.Kind != KernelKind::Reduction)
+    return;
+  const Expr *Target = nullptr;
+  if (const auto *B = dyn_cast<BinaryOperator>(S); B && B->isAssignmentOp())
+    Target = B->getLHS();
+  else if (const auto *U = dyn_cast<UnaryOperator>(S); U && U->isIncrementDecrementOp())
+    Target = U->getSubExpr();
+  else if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(S);
+           OC && OC->getNumArgs() > 0 && isa_and_nonnull<CXXMethodDecl>(OC->getDirectCallee()) &&
+           !cast<CXXMethodDecl>(OC->getDirectCallee())->isConst())
+    Target = OC->getArg(0); // g += x, ++g, g(x) on a class type.
+  else if (const auto *MC = dyn_cast<CXXMemberCallExpr>(S);
+           MC && MC->getMethodDecl() && !MC->getMethodDecl()->isConst() &&
+           !MC->getMethodDecl()->isStatic())
+    Target = MC->getImplicitObjectArgument(); // rng(), v.push_back(x)...
+  if (!Target)
+    return;
+  const VarDecl *VD = storageOf(Target);
+  if (!VD || !isUserCode(Ctx.getSourceManager(), VD))
+    return;
+  D.report(DiagId::GlobalWriteInParticleKernel, S->getBeginLoc(),
+           {kernelKindName(K.Kind), K.Function, VD->getQualifiedNameAsString()});
+}
+
+/// A particle bound to a parameter whose type is a template parameter
+/// (`auto &q`, `P &p`): the source is rewritten once, from the template, and
+/// only accesses written against wash::Particle can be rewritten.
+bool KernelAnalyser::particleThroughTemplate(const FunctionDecl *FD,
+                                             const std::vector<Roles> &Params,
+                                             SourceLocation Loc) {
+  const FunctionDecl *Pattern = FD->getTemplateInstantiationPattern();
+  if (!Pattern)
+    return false;
+  for (unsigned I = 0; I < Params.size() && I < Pattern->getNumParams(); ++I) {
+    const ParmVarDecl *P = Pattern->getParamDecl(I);
+    if ((Params[I] || involvesParticle(FD->getParamDecl(I)->getType())) &&
+        P->getType()->isDependentType()) {
+      std::string Name = isLambda(FD) ? "lambda" : "'" + FD->getQualifiedNameAsString() + "'";
+      D.report(DiagId::ParticleThroughTemplate, Loc, {Name});
+      D.report(DiagId::NoteDeclaredHere, P->getLocation(), {P->getNameAsString()});
+      if (isLambda(FD)) // Reported here rather than as an escape.
+        AnalysedLambdas.insert(cast<CXXMethodDecl>(FD)->getParent());
+      return true;
+    }
+  }
+  return false;
 }
 
 /// A lambda capturing a particle variable or taking particle parameters.
@@ -455,16 +543,38 @@ void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
   std::vector<Roles> Params;
   for (unsigned I = Skip; I < CE->getNumArgs(); ++I)
     Params.push_back(roleOf(CE->getArg(I)));
+  if (particleThroughTemplate(Def, Params, CE->getBeginLoc()))
+    return;
   Frames.back()->Calls[CE] = analyse(Def, Params);
 }
 
 } // namespace
+
+/// Every force is a column and a member of several generated structs: g++'s
+/// time and memory on the generated code grow with the count (figures in
+/// docs/diagnostics.md, ForceLimit).
+static constexpr unsigned MaxForces = 1000;
+
+static void checkForceCount(Diagnoser &D, const Model &M) {
+  std::set<std::string> Names;
+  auto Count = [&](const std::string &Name, const SourcePos &Pos) {
+    if (Names.insert(Name).second && Names.size() == MaxForces + 1)
+      D.report(DiagId::ForceLimit, D.fromPos(Pos), {Name, std::to_string(MaxForces)});
+  };
+  for (const ForceRegistration &F : M.Forces)
+    Count(F.Name, F.Pos);
+  for (const Kernel &K : M.Kernels)
+    for (const Access &A : K.Accesses)
+      if (A.Kind)
+        Count(A.Field, A.Pos);
+}
 
 bool inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs, Model &M) {
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     KernelAnalyser A(Ctx, D, M.Kernels[I], D.fromPos(M.Kernels[I].Pos));
     A.run(Refs.Kernels[I]);
   }
+  checkForceCount(D, M);
   return !D.hasErrors();
 }
 
