@@ -31,10 +31,10 @@ struct Guard {
 struct Frame {
   unsigned Parent; ///< 0: none (main).
   const FunctionDecl *Function;
-  unsigned RestGuard = 0;  ///< Guards the rest of the body after a return.
+  unsigned RestGuard = 0; ///< Guards the rest of the body after a return.
   bool UsesGoto = false;
-  bool Recursive = false;  ///< Calls itself, directly or not.
-  unsigned FirstCall = 0;  ///< Index of the first registration or start in it.
+  bool Recursive = false; ///< Calls itself, directly or not.
+  unsigned FirstCall = 0; ///< Index of the first registration or start in it.
 };
 
 /// A registration or wash::start the walk reached.
@@ -223,7 +223,6 @@ private:
     enter(Def, I.Guard, I.Frame, I.InLoop);
   }
 
-private:
   std::vector<unsigned> guardsOf(unsigned Guard, unsigned F) const {
     std::vector<unsigned> Set;
     for (; Guard; Guard = Guards[Guard].Parent)

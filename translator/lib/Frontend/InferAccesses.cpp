@@ -509,9 +509,11 @@ bool KernelAnalyser::opaqueCallable(const CallExpr *CE) {
   if (!Opaque)
     return false;
   const FunctionDecl *FD = CE->getDirectCallee();
-  std::string Name = CallsObject ? OC->getArg(0)->getType().getNonReferenceType().getUnqualifiedType().getAsString(
-                                       Ctx.getPrintingPolicy())
-                                 : FD->getQualifiedNameAsString();
+  PrintingPolicy PP = Ctx.getPrintingPolicy();
+  std::string Name =
+      CallsObject
+          ? OC->getArg(0)->getType().getNonReferenceType().getUnqualifiedType().getAsString(PP)
+          : FD->getQualifiedNameAsString();
   D.report(DiagId::CallableEscapes, CE->getBeginLoc(), {Name});
   return true;
 }
