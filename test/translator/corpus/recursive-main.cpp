@@ -1,5 +1,6 @@
-// main calling itself and helpers calling each other while registering.
-// RUN: %expect_exit 0 %wash --dump-model %s 2>&1 | FileCheck %s
+// main calling itself and helpers calling each other while registering:
+// rejected, not a crash or a hang (registrations must run exactly once).
+// RUN: %expect_exit 1 %wash --dump-model %s 2>&1 | FileCheck %s
 #include <wash/wash.hpp>
 void b(int n);
 void a(int n) { if (n > 0) b(n - 1); }
@@ -10,4 +11,5 @@ int main(int argc, char **) {
   a(3);
   wash::start();
 }
-// CHECK: x: registered scalar dead @6:59
+// CHECK: recursive-main.cpp:7:43: error: call to 'wash::add_force' is in 'a', which calls itself recursively
+// CHECK: recursive-main.cpp:12:3: error: 'wash::start' may run more than once (in 'main', which calls itself recursively)

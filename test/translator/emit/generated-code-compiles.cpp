@@ -11,3 +11,8 @@
 // RUN: %cxx_check -I%t/mpi %t/mpi/access-neighbour-forms.mpi.cpp
 // RUN: %wash --backend=serial -o %t/helpers %S/../analysis/access-helper-parameter-binding.cpp 2>/dev/null
 // RUN: %cxx_check -I%t/helpers %t/helpers/access-helper-parameter-binding.serial.cpp
+// Lambdas the escape checks accept, and registrations guarded with start:
+// RUN: %wash --backend=serial -o %t/lambdas %S/../analysis/lambda-through-std-function.cpp 2>/dev/null
+// RUN: %cxx_check -I%t/lambdas %t/lambdas/lambda-through-std-function.serial.cpp
+// RUN: %wash --backend=serial -o %t/flow %S/../settings/registration-flow-accepted.cpp 2>/dev/null
+// RUN: %cxx_check -I%t/flow %t/flow/registration-flow-accepted.serial.cpp

@@ -1,5 +1,6 @@
 //===- CollectSimulation.cpp ----------------------------------------------===//
 #include "wash/translator/Frontend/CollectSimulation.h"
+#include "wash/translator/Frontend/CheckRegistrationFlow.h"
 #include "wash/translator/Frontend/ResolveKernel.h"
 #include "wash/translator/Frontend/WashApi.h"
 
@@ -266,6 +267,7 @@ bool collectSimulation(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs) {
   C.walkFunction(Refs.Main, /*InLoop=*/false);
   Stragglers S(Ctx.getSourceManager(), D, C.Reached);
   S.TraverseAST(Ctx);
+  checkRegistrationFlow(Ctx, D, Refs.Main);
   if (!M.Sim.CallsStart)
     D.report(DiagId::MissingStart, Refs.Main->getLocation());
   return !D.hasErrors();

@@ -30,6 +30,11 @@ public:
       : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc) {}
 
   void run(const FunctionDecl *Def) {
+    // The driver calls the kernel by its plain name, with no template arguments.
+    if (Def->getPrimaryTemplate() || Def->getTemplateSpecializationKind() != TSK_Undeclared) {
+      D.report(DiagId::KernelIsTemplate, KernelLoc, {K.Function});
+      return;
+    }
     std::vector<Roles> Params;
     if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
         K.Kind == KernelKind::Reduction)
@@ -37,24 +42,26 @@ public:
     if (K.Kind == KernelKind::Force)
       Params.push_back(RoleList);
     analyse(Def, Params);
+    reportEscapedLambdas();
   }
 
 private:
   RoleEvaluator roles() {
     return RoleEvaluator(
-        [this](const ValueDecl *VD) -> Roles {
-          // Innermost first: lambda bodies see their enclosing function's variables.
-          for (auto It = Frames.rbegin(); It != Frames.rend(); ++It)
-            if (auto F = (*It)->Vars.find(VD); F != (*It)->Vars.end())
-              return F->second;
-          return 0;
-        },
+        [this](const ValueDecl *VD) { return varRoles(VD); },
         [this](const CallExpr *CE) -> std::optional<Roles> {
           auto It = Frames.back()->Calls.find(CE);
           return It == Frames.back()->Calls.end() ? std::nullopt : std::optional(It->second);
         });
   }
   Roles roleOf(const Expr *E) { return roles().of(E); }
+  Roles varRoles(const ValueDecl *VD) const {
+    // Innermost first: lambda bodies see their enclosing function's variables.
+    for (auto It = Frames.rbegin(); It != Frames.rend(); ++It)
+      if (auto F = (*It)->Vars.find(VD); F != (*It)->Vars.end())
+        return F->second;
+    return 0;
+  }
 
   Roles analyse(const FunctionDecl *FD, const std::vector<Roles> &Params) {
     auto Key = std::make_pair(FD->getCanonicalDecl(), Params);
@@ -65,6 +72,8 @@ private:
       return 0;
     }
     --Budget;
+    if (isLambda(FD))
+      AnalysedLambdas.insert(cast<CXXMethodDecl>(FD)->getParent());
     Frame F;
     for (unsigned I = 0; I < FD->getNumParams() && I < Params.size(); ++I)
       F.Vars[FD->getParamDecl(I)] = Params[I];
@@ -141,8 +150,14 @@ private:
     if (const auto *L = dyn_cast<LambdaExpr>(S)) {
       for (const Expr *Init : L->capture_inits())
         record(Init); // The body is analysed where the lambda is called.
+      if (usesParticle(L))
+        ParticleLambdas.push_back(L);
       return;
     }
+    if (const auto *CE = dyn_cast<CallExpr>(S))
+      DirectCallees.insert(CE->getCallee()->IgnoreParenImpCasts());
+    if (const auto *DRE = dyn_cast<DeclRefExpr>(S))
+      functionReference(DRE);
     for (const Stmt *Child : S->children())
       record(Child);
     if (const auto *DS = dyn_cast<DeclStmt>(S))
@@ -155,9 +170,17 @@ private:
       Frames.back()->Return |= roleOf(RS->getRetValue());
     if (const auto *CE = dyn_cast<CallExpr>(S))
       call(CE);
+    globalWrite(S);
   }
 
   void call(const CallExpr *CE);
+  bool usesParticle(const LambdaExpr *L);
+  void functionReference(const DeclRefExpr *DRE);
+  bool opaqueCallable(const CallExpr *CE);
+  bool particleThroughTemplate(const FunctionDecl *FD, const std::vector<Roles> &Params,
+                               SourceLocation Loc);
+  void reportEscapedLambdas();
+  void globalWrite(const Stmt *S);
   void particleMethod(const CallExpr *CE, const FunctionDecl *FD);
   void libraryCall(const CallExpr *CE);
   void userCall(const CallExpr *CE, const FunctionDecl *FD);
@@ -181,6 +204,10 @@ private:
   std::map<std::pair<const FunctionDecl *, std::vector<Roles>>, Roles> Memo;
   std::set<std::tuple<std::string, Target, Mode, unsigned, unsigned>> Recorded;
   unsigned Budget = 20000;
+  // Escapes: particles reaching code the analysis does not follow.
+  std::set<const Expr *> DirectCallees;
+  std::vector<const LambdaExpr *> ParticleLambdas;
+  std::set<const CXXRecordDecl *> AnalysedLambdas;
 };
 
 void KernelAnalyser::call(const CallExpr *CE) {
@@ -213,8 +240,12 @@ void KernelAnalyser::call(const CallExpr *CE) {
              {kernelKindName(K.Kind), K.Function});
     return;
   }
-  if (isWashFunction(FD))
+  if (isWashFunction(FD)) {
+    // User code in namespace wash is not the API, but is not followed either.
+    if (!washCall(FD) && isUserCode(Ctx.getSourceManager(), FD) && anyParticleArg(CE))
+      D.report(DiagId::HelperInWashNamespace, CE->getBeginLoc(), {FD->getQualifiedNameAsString()});
     return;
+  }
   const auto *MD = dyn_cast<CXXMethodDecl>(FD);
   if (MD && MD->isVirtual() && !MD->hasAttr<FinalAttr>() &&
       !MD->getParent()->hasAttr<FinalAttr>() && anyParticleArg(CE)) {
@@ -306,6 +337,8 @@ static const LambdaExpr *lambdaOf(const Expr *E) {
 /// given: std::for_each(ns.begin(), ns.end(), [&](const Particle &n) {...})
 /// calls the lambda with what the other arguments hold.
 void KernelAnalyser::libraryCall(const CallExpr *CE) {
+  if (opaqueCallable(CE))
+    return;
   Roles Given = 0;
   for (const Expr *A : CE->arguments())
     Given |= derefRoles(roleOf(A)) | (roleOf(A) & (RoleOwn | RoleNeighbour));
@@ -325,9 +358,172 @@ void KernelAnalyser::libraryCall(const CallExpr *CE) {
       std::vector<Roles> Params;
       for (const ParmVarDecl *P : Op->parameters())
         Params.push_back(involvesParticle(P->getType()) ? Given : 0);
-      analyse(Op, Params);
+      if (!particleThroughTemplate(Op, Params, CE->getBeginLoc()))
+        analyse(Op, Params);
     }
   }
+}
+
+/// The global or static variable E names, through members and subscripts.
+static const VarDecl *storageOf(const Expr *E) {
+  for (unsigned Depth = 0; E && Depth < 64; ++Depth) {
+    E = E->IgnoreParenImpCasts();
+    if (const auto *M = dyn_cast<MemberExpr>(E)) {
+      if (const auto *VD = dyn_cast<VarDecl>(M->getMemberDecl())) // Static member.
+        return VD->hasGlobalStorage() ? VD : nullptr;
+      E = M->isArrow() ? nullptr : M->getBase();
+    } else if (const auto *A = dyn_cast<ArraySubscriptExpr>(E)) {
+      E = A->getBase()->IgnoreParenImpCasts();
+      if (!E->getType()->isArrayType())
+        return nullptr; // Through a pointer: not this variable's storage.
+    } else if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(E);
+               OC && OC->getOperator() == OO_Subscript) {
+      E = OC->getArg(0); // v[i] of a global container.
+    } else if (const auto *DRE = dyn_cast<DeclRefExpr>(E)) {
+      const auto *VD = dyn_cast<VarDecl>(DRE->getDecl());
+      return VD && VD->hasGlobalStorage() ? VD : nullptr;
+    } else {
+      return nullptr;
+    }
+  }
+  return nullptr;
+}
+
+/// Per-particle kernels writing a global or static variable: the result
+/// depends on the order particles are visited in, which backends and ranks
+/// do not share. Reading globals (set in main) is fine.
+void KernelAnalyser::globalWrite(const Stmt *S) {
+  if (K.Kind != KernelKind::Update && K.Kind != KernelKind::Force &&
+      K.Kind != KernelKind::Reduction)
+    return;
+  const Expr *Target = nullptr;
+  if (const auto *B = dyn_cast<BinaryOperator>(S); B && B->isAssignmentOp())
+    Target = B->getLHS();
+  else if (const auto *U = dyn_cast<UnaryOperator>(S); U && U->isIncrementDecrementOp())
+    Target = U->getSubExpr();
+  else if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(S);
+           OC && OC->getNumArgs() > 0 && isa_and_nonnull<CXXMethodDecl>(OC->getDirectCallee()) &&
+           !cast<CXXMethodDecl>(OC->getDirectCallee())->isConst())
+    Target = OC->getArg(0); // g += x, ++g, g(x) on a class type.
+  else if (const auto *MC = dyn_cast<CXXMemberCallExpr>(S);
+           MC && MC->getMethodDecl() && !MC->getMethodDecl()->isConst() &&
+           !MC->getMethodDecl()->isStatic())
+    Target = MC->getImplicitObjectArgument(); // rng(), v.push_back(x)...
+  if (!Target)
+    return;
+  const VarDecl *VD = storageOf(Target);
+  if (!VD || !isUserCode(Ctx.getSourceManager(), VD))
+    return;
+  D.report(DiagId::GlobalWriteInParticleKernel, S->getBeginLoc(),
+           {kernelKindName(K.Kind), K.Function, VD->getQualifiedNameAsString()});
+}
+
+/// A particle bound to a parameter whose type is a template parameter
+/// (`auto &q`, `P &p`): the source is rewritten once, from the template, and
+/// only accesses written against wash::Particle can be rewritten.
+bool KernelAnalyser::particleThroughTemplate(const FunctionDecl *FD,
+                                             const std::vector<Roles> &Params,
+                                             SourceLocation Loc) {
+  const FunctionDecl *Pattern = FD->getTemplateInstantiationPattern();
+  if (!Pattern)
+    return false;
+  for (unsigned I = 0; I < Params.size() && I < Pattern->getNumParams(); ++I) {
+    const ParmVarDecl *P = Pattern->getParamDecl(I);
+    if ((Params[I] || involvesParticle(FD->getParamDecl(I)->getType())) &&
+        P->getType()->isDependentType()) {
+      std::string Name = isLambda(FD) ? "lambda" : "'" + FD->getQualifiedNameAsString() + "'";
+      D.report(DiagId::ParticleThroughTemplate, Loc, {Name});
+      D.report(DiagId::NoteDeclaredHere, P->getLocation(), {P->getNameAsString()});
+      if (isLambda(FD)) // Reported here rather than as an escape.
+        AnalysedLambdas.insert(cast<CXXMethodDecl>(FD)->getParent());
+      return true;
+    }
+  }
+  return false;
+}
+
+/// A lambda capturing a particle variable or taking particle parameters.
+bool KernelAnalyser::usesParticle(const LambdaExpr *L) {
+  for (const LambdaCapture &C : L->captures())
+    if (C.capturesVariable())
+      if (const ValueDecl *VD = C.getCapturedVar();
+          VD && (involvesParticle(VD->getType()) || varRoles(VD)))
+        return true;
+  std::vector<const FunctionDecl *> Operators{L->getCallOperator()};
+  if (const FunctionTemplateDecl *T = L->getDependentCallOperator())
+    for (const FunctionDecl *Spec : T->specializations())
+      Operators.push_back(Spec);
+  for (const FunctionDecl *Op : Operators)
+    for (const ParmVarDecl *P : Op->parameters())
+      if (involvesParticle(P->getType()))
+        return true;
+  return false;
+}
+
+/// A function taking a particle, named other than as a call's callee: the
+/// calls made through the pointer or std::function are not followed.
+void KernelAnalyser::functionReference(const DeclRefExpr *DRE) {
+  const auto *FD = dyn_cast<FunctionDecl>(DRE->getDecl());
+  if (!FD || DirectCallees.count(DRE) || isWashFunction(FD) ||
+      !isUserCode(Ctx.getSourceManager(), FD))
+    return;
+  for (const ParmVarDecl *P : FD->parameters())
+    if (involvesParticle(P->getType())) {
+      D.report(DiagId::FunctionEscapes, DRE->getLocation(), {FD->getQualifiedNameAsString()});
+      return;
+    }
+}
+
+/// A particle handed to a callable the analysis cannot see into: a
+/// std::function's operator(), std::invoke(f, p)...; lambdas are followed.
+bool KernelAnalyser::opaqueCallable(const CallExpr *CE) {
+  bool GivesParticle = false;
+  unsigned First = 0;
+  const auto *OC = dyn_cast<CXXOperatorCallExpr>(CE);
+  bool CallsObject = OC && OC->getOperator() == OO_Call && OC->getNumArgs() > 0;
+  if (CallsObject && !lambdaOf(OC->getArg(0)))
+    First = 1;
+  else
+    CallsObject = false;
+  for (unsigned I = First; I < CE->getNumArgs(); ++I) {
+    const Expr *A = CE->getArg(I);
+    if (roleOf(A) & (RoleOwn | RoleNeighbour) || involvesParticle(A->getType()))
+      GivesParticle = true;
+  }
+  if (!GivesParticle)
+    return false;
+  bool Opaque = CallsObject;
+  for (unsigned I = First; I < CE->getNumArgs() && !Opaque; ++I) {
+    const Expr *A = CE->getArg(I);
+    QualType T = A->getType().getNonReferenceType();
+    if (lambdaOf(A))
+      continue;
+    if (T->isFunctionPointerType() || T->isFunctionType() || T->isMemberFunctionPointerType())
+      Opaque = true;
+    else if (const CXXRecordDecl *RD = T->getAsCXXRecordDecl();
+             RD && RD->hasDefinition() && !RD->isLambda())
+      for (const CXXMethodDecl *M : RD->methods())
+        if (M->getOverloadedOperator() == OO_Call)
+          Opaque = true;
+  }
+  if (!Opaque)
+    return false;
+  const FunctionDecl *FD = CE->getDirectCallee();
+  PrintingPolicy PP = Ctx.getPrintingPolicy();
+  std::string Name =
+      CallsObject
+          ? OC->getArg(0)->getType().getNonReferenceType().getUnqualifiedType().getAsString(PP)
+          : FD->getQualifiedNameAsString();
+  D.report(DiagId::CallableEscapes, CE->getBeginLoc(), {Name});
+  return true;
+}
+
+/// Lambdas using a particle that no call the analysis followed ran: stored
+/// in a std::thread, a std::function called elsewhere...
+void KernelAnalyser::reportEscapedLambdas() {
+  for (const LambdaExpr *L : ParticleLambdas)
+    if (!AnalysedLambdas.count(L->getLambdaClass()))
+      D.report(DiagId::LambdaEscapes, L->getBeginLoc());
 }
 
 void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
@@ -349,16 +545,38 @@ void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
   std::vector<Roles> Params;
   for (unsigned I = Skip; I < CE->getNumArgs(); ++I)
     Params.push_back(roleOf(CE->getArg(I)));
+  if (particleThroughTemplate(Def, Params, CE->getBeginLoc()))
+    return;
   Frames.back()->Calls[CE] = analyse(Def, Params);
 }
 
 } // namespace
+
+/// Every force is a column and a member of several generated structs: g++'s
+/// time and memory on the generated code grow with the count (figures in
+/// docs/diagnostics.md, ForceLimit).
+static constexpr unsigned MaxForces = 1000;
+
+static void checkForceCount(Diagnoser &D, const Model &M) {
+  std::set<std::string> Names;
+  auto Count = [&](const std::string &Name, const SourcePos &Pos) {
+    if (Names.insert(Name).second && Names.size() == MaxForces + 1)
+      D.report(DiagId::ForceLimit, D.fromPos(Pos), {Name, std::to_string(MaxForces)});
+  };
+  for (const ForceRegistration &F : M.Forces)
+    Count(F.Name, F.Pos);
+  for (const Kernel &K : M.Kernels)
+    for (const Access &A : K.Accesses)
+      if (A.Kind)
+        Count(A.Field, A.Pos);
+}
 
 bool inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs, Model &M) {
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     KernelAnalyser A(Ctx, D, M.Kernels[I], D.fromPos(M.Kernels[I].Pos));
     A.run(Refs.Kernels[I]);
   }
+  checkForceCount(D, M);
   return !D.hasErrors();
 }
 

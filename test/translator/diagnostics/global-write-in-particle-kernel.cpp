@@ -1,0 +1,63 @@
+// RUN: %wash --dump-model %s 2>&1 | FileCheck %s
+// Global and static state written per particle: order- and rank-dependent.
+#include <wash/wash.hpp>
+#include <random>
+#include <vector>
+
+int Visited = 0;
+double Total[2];
+std::vector<double> Seen;
+std::mt19937 Rng(1);
+struct Stats { static double Max; };
+double Stats::Max = 0;
+const double Scale = 2.0; // Read only: fine.
+double Gain = 1.0;        // Set in main, read in kernels: fine.
+
+void count() {
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: update kernel 'Update' writes 'Visited', a global or static variable; it runs once per particle, in an order that differs between backends and ranks, so the result is not the same everywhere
+  ++Visited;
+}
+
+void Update(wash::Particle &p) {
+  count();
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: update kernel 'Update' writes 'Total'
+  Total[0] += p.get_mass();
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: update kernel 'Update' writes 'Seen'
+  Seen.push_back(p.get_mass());
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:19: warning: update kernel 'Update' writes 'Rng'
+  double jitter = Rng() * 1e-12;
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: update kernel 'Update' writes 'Stats::Max'
+  Stats::Max = p.get_mass();
+  static int Calls = 0;
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: update kernel 'Update' writes 'Calls'
+  Calls++;
+  p.set_mass(p.get_mass() * Scale * Gain + jitter);
+}
+
+void Force(wash::Particle &p, const std::vector<wash::Particle> &) {
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: force kernel 'Force' writes 'Gain'
+  Gain = p.get_density();
+}
+
+double Height(const wash::Particle &p) {
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: reduction kernel 'Height' writes 'Visited'
+  Visited = 1;
+  return p.get_mass();
+}
+
+int Spawned = 0;
+void Init() {
+  Spawned = 1; // Init kernels run once: fine.
+}
+
+int main(int argc, char **) {
+  Gain = argc;
+  wash::add_variable("h", 0.0);
+  wash::add_init_kernel(&Init);
+  wash::add_update_kernel(&Update);
+  wash::add_force_kernel(&Force);
+  wash::add_reduction_kernel(&Height, wash::Reduction::Max, "h");
+  wash::start();
+}
+// CHECK-NOT: warning: {{.*}} writes '{{Scale|Spawned}}'
+// CHECK-NOT: error:
