@@ -5,6 +5,7 @@
 #include "clang/AST/ASTConsumer.h"
 #include "clang/Frontend/CompilerInstance.h"
 #include "clang/Frontend/FrontendAction.h"
+#include "clang/Frontend/TextDiagnosticPrinter.h"
 #include "clang/Tooling/ArgumentsAdjusters.h"
 #include "clang/Tooling/CompilationDatabase.h"
 #include "clang/Tooling/Tooling.h"
@@ -18,6 +19,9 @@ using namespace clang;
 
 namespace wash::tr {
 namespace {
+
+/// The largest simulation file wash reads.
+constexpr uint64_t MaxSourceBytes = uint64_t(64) << 20;
 
 using Callback = std::function<void(ASTContext &, Diagnoser &, unsigned)>;
 
@@ -89,9 +93,30 @@ unsigned definedDim(const std::vector<std::string> &Args) {
   return Dim;
 }
 
+/// Why Source cannot be a simulation file ("" if it can be read): a device,
+/// FIFO or directory would make clang read forever or fail obscurely, and an
+/// unbounded file exhausts memory.
+std::string unreadableReason(const std::string &Source) {
+  llvm::sys::fs::file_status Status;
+  if (std::error_code EC = llvm::sys::fs::status(Source, Status))
+    return EC.message();
+  if (Status.type() == llvm::sys::fs::file_type::directory_file)
+    return "it is a directory";
+  if (Status.type() != llvm::sys::fs::file_type::regular_file)
+    return "it is not a regular file";
+  if (Status.getSize() > MaxSourceBytes)
+    return "it is larger than " + std::to_string(MaxSourceBytes >> 20) +
+           " MB; a simulation file must be smaller";
+  return "";
+}
+
 } // namespace
 
 bool parseSimulation(const Options &Opts, const Callback &OnAST) {
+  if (std::string Reason = unreadableReason(Opts.Source); !Reason.empty()) {
+    llvm::errs() << "wash: error: cannot read '" << Opts.Source << "': " << Reason << "\n";
+    return false;
+  }
   auto Buffer = llvm::MemoryBuffer::getFile(Opts.Source);
   if (!Buffer) {
     llvm::errs() << "wash: error: cannot read '" << Opts.Source
@@ -113,13 +138,20 @@ bool parseSimulation(const Options &Opts, const Callback &OnAST) {
   Tool.appendArgumentsAdjuster(
       tooling::getInsertArgumentAdjuster(Baked, tooling::ArgumentInsertPosition::BEGIN));
 
+  // One printer for the driver's and the compiler's diagnostics, so that an
+  // error either reports (an unknown flag, say) fails the run: ClangTool
+  // itself returns 0 after a driver error.
+  llvm::IntrusiveRefCntPtr<DiagnosticOptions> DiagOpts = new DiagnosticOptions();
+  TextDiagnosticPrinter Printer(llvm::errs(), DiagOpts.get());
+  Tool.setDiagnosticConsumer(&Printer);
+
   Factory F(OnAST, Dim);
   int Status = 1;
   // Deeply nested hostile input must not overflow the stack: run clang and
   // the passes, which recurse over the AST, on a thread with a large one.
   llvm::thread Worker(std::optional<unsigned>(512u << 20), [&] { Status = Tool.run(&F); });
   Worker.join();
-  return Status == 0;
+  return Status == 0 && Printer.getNumErrors() == 0;
 }
 
 } // namespace wash::tr
