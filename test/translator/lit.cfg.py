@@ -30,3 +30,7 @@ for _backend in config.wash_backends:
     config.available_features.add("backend-" + _backend)
 config.substitutions.append(
     ("%cxx_check", config.cxx + " -std=c++20 -fsyntax-only -fopenmp " + _includes))
+
+# REQUIRES: root, for tests that mount a small tmpfs (a full disk).
+if hasattr(os, "geteuid") and os.geteuid() == 0:
+    config.available_features.add("root")
