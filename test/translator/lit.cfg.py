@@ -34,3 +34,6 @@ config.substitutions.append(
 # REQUIRES: root, for tests that mount a small tmpfs (a full disk).
 if hasattr(os, "geteuid") and os.geteuid() == 0:
     config.available_features.add("root")
+# %cxx: the C++ compiler this build uses, to build generated projects (after
+# %cxx_check, which it is a prefix of).
+config.substitutions.append(("%cxx", config.cxx))

@@ -89,8 +89,7 @@ struct Existing {
 };
 
 /// Dir's content, or an error if wash must not write there.
-std::string inspect(const std::string &Dir, const std::vector<GeneratedFile> &Files,
-                    Existing &E) {
+std::string inspect(const std::string &Dir, const std::vector<GeneratedFile> &Files, Existing &E) {
   fs::file_status Status;
   if (fs::status(Dir, Status))
     return "";
@@ -107,8 +106,8 @@ std::string inspect(const std::string &Dir, const std::vector<GeneratedFile> &Fi
     return "";
   std::optional<std::vector<std::string>> Marker = readMarker(Dir);
   if (!Marker)
-    return "output folder '" + Dir + "' is not empty and holds no wash project (no '" +
-           MarkerName + "' file); wash never overwrites files it did not write: choose a new or " +
+    return "output folder '" + Dir + "' is not empty and holds no wash project (no '" + MarkerName +
+           "' file); wash never overwrites files it did not write: choose a new or " +
            "empty folder with -o";
   E.Ours.insert(MarkerName);
   for (const std::string &Name : *Marker)
@@ -168,8 +167,8 @@ bool moveEntries(const std::vector<std::string> &Names, const std::string &From,
 
 /// The whole project swapped in by rename; false (and nothing changed) if Dir
 /// cannot be swapped, with Error set if the project could not be written.
-bool writeBeside(const std::string &Dir, const std::vector<GeneratedFile> &Files,
-                 const Existing &E, std::string &Error) {
+bool writeBeside(const std::string &Dir, const std::vector<GeneratedFile> &Files, const Existing &E,
+                 std::string &Error) {
   llvm::SmallString<256> Abs(Dir);
   fs::make_absolute(Abs);
   path::remove_dots(Abs, /*remove_dot_dot=*/true);
