@@ -89,8 +89,8 @@ public:
 private:
   std::pair<unsigned, unsigned> offsets(SourceRange Range) const {
     unsigned Begin = SM.getFileOffset(Range.getBegin());
-    unsigned End = SM.getFileOffset(Range.getEnd()) +
-                   Lexer::MeasureTokenLength(Range.getEnd(), SM, LangOpts);
+    unsigned End =
+        SM.getFileOffset(Range.getEnd()) + Lexer::MeasureTokenLength(Range.getEnd(), SM, LangOpts);
     return {Begin, std::max(Begin, End)};
   }
 

@@ -155,11 +155,12 @@ std::string nestingError(const std::string &File, llvm::StringRef Text) {
     bool AfterOperand = Last == tok::identifier || Last == tok::numeric_constant ||
                         Last == tok::r_paren || Last == tok::r_square ||
                         Last == tok::string_literal || Last == tok::char_constant;
-    bool IsPrefix = !AfterOperand &&
-                    (K == tok::minus || K == tok::plus || K == tok::exclaim || K == tok::tilde ||
-                     K == tok::star || K == tok::amp || K == tok::plusplus ||
-                     K == tok::minusminus || K == tok::raw_identifier &&
-                     (Tok.getRawIdentifier() == "sizeof" || Tok.getRawIdentifier() == "throw"));
+    bool IsPrefix =
+        !AfterOperand &&
+        (K == tok::minus || K == tok::plus || K == tok::exclaim || K == tok::tilde ||
+         K == tok::star || K == tok::amp || K == tok::plusplus || K == tok::minusminus ||
+         K == tok::raw_identifier &&
+             (Tok.getRawIdentifier() == "sizeof" || Tok.getRawIdentifier() == "throw"));
     if (IsPrefix) {
       if (Prefix++ == 0)
         RunStart = offsetOf(Tok, Start);
@@ -178,10 +179,10 @@ std::string nestingError(const std::string &File, llvm::StringRef Text) {
       ElseIfs.push_back(0);
     if (K == tok::r_brace && ElseIfs.size() > 1)
       ElseIfs.pop_back();
-    if (K == tok::raw_identifier && Tok.getRawIdentifier() == "if" &&
-        Last == tok::raw_identifier && ++ElseIfs.back() > MaxElseIfChain)
-      return Error(offsetOf(Tok, Start), "an else-if chain of more than " +
-                                             std::to_string(MaxElseIfChain) + " branches");
+    if (K == tok::raw_identifier && Tok.getRawIdentifier() == "if" && Last == tok::raw_identifier &&
+        ++ElseIfs.back() > MaxElseIfChain)
+      return Error(offsetOf(Tok, Start),
+                   "an else-if chain of more than " + std::to_string(MaxElseIfChain) + " branches");
     // Raw identifiers keep their kind; remember `else` to spot `else if`.
     Last = K == tok::raw_identifier
                ? (Tok.getRawIdentifier() == "else" ? tok::raw_identifier : tok::identifier)
