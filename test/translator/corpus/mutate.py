@@ -22,6 +22,8 @@ from concurrent.futures import ThreadPoolExecutor
 TOKEN = re.compile(rb"\w+|\S")
 # A diagnostic line: "file:line:col: error:" (or "fatal error:").
 LOCATED = re.compile(rb"^[^\s|][^|]*:\d+:\d+: (fatal )?error: ")
+# clang's summary after 20 errors, which carried their places.
+SUMMARY = b"fatal error: too many errors emitted, stopping now"
 CRASH = (b"Stack dump", b"PLEASE submit a bug report", b"Segmentation fault")
 
 
@@ -75,7 +77,8 @@ def check(job):
         problems.append("crash report on stderr")
     errors = [l for l in p.stderr.split(b"\n") if b"error:" in l and not l[:1].isspace()
               and b"|" not in l[:8]]
-    unlocated = [l for l in errors if not LOCATED.match(l)]
+    unlocated = [l for l in errors if not LOCATED.match(l)
+                 and not (l.startswith(SUMMARY) and any(LOCATED.match(e) for e in errors))]
     if unlocated:
         problems.append("error without file:line:col: %r" % unlocated[0][:200])
     if bool(errors) != (p.returncode != 0):
