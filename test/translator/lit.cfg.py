@@ -30,3 +30,10 @@ for _backend in config.wash_backends:
     config.available_features.add("backend-" + _backend)
 config.substitutions.append(
     ("%cxx_check", config.cxx + " -std=c++20 -fsyntax-only -fopenmp " + _includes))
+
+# REQUIRES: root, for tests that mount a small tmpfs (a full disk).
+if hasattr(os, "geteuid") and os.geteuid() == 0:
+    config.available_features.add("root")
+# %cxx: the C++ compiler this build uses, to build generated projects (after
+# %cxx_check, which it is a prefix of).
+config.substitutions.append(("%cxx", config.cxx))

@@ -6,11 +6,36 @@
 
 namespace wash::tr {
 
+/// Name as a CMake target or project name, which allow only these characters
+/// (CMP0037): a file called "my sim.cpp" gives the target my_sim-serial.
+static std::string cmakeName(const std::string &Name) {
+  std::string Out = Name;
+  for (char &C : Out)
+    if (!((C >= 'a' && C <= 'z') || (C >= 'A' && C <= 'Z') || (C >= '0' && C <= '9') || C == '_' ||
+          C == '.' || C == '+' || C == '-'))
+      C = '_';
+  return Out;
+}
+
+/// Text as a CMake argument: quoted unless it is a plain name, with \, ",
+/// $ and ; escaped (";" would otherwise split a list of sources).
+static std::string cmakeArgument(const std::string &Text) {
+  if (cmakeName(Text) == Text)
+    return Text;
+  std::string Out = "\"";
+  for (char C : Text) {
+    if (C == '\\' || C == '"' || C == '$' || C == ';')
+      Out += '\\';
+    Out += C;
+  }
+  return Out + "\"";
+}
+
 std::string emitCMakeLists(const CodePlan &Plan, const std::vector<std::string> &PackageHints) {
-  std::string Target = Plan.Stem + "-" + backendName(Plan.Target);
+  std::string Target = cmakeName(Plan.Stem + "-" + backendName(Plan.Target));
   std::ostringstream OS;
   OS << generatedBanner(Plan, "#") << "cmake_minimum_required(VERSION 3.20)\n"
-     << "project(" << Plan.Stem << "_" << backendName(Plan.Target) << " LANGUAGES CXX)\n"
+     << "project(" << cmakeName(Plan.Stem) << "_" << backendName(Plan.Target) << " LANGUAGES CXX)\n"
      << "if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)\n"
      << "  set(CMAKE_BUILD_TYPE Release CACHE STRING \"Build type\" FORCE)\n"
      << "endif()\n\n"
@@ -19,7 +44,7 @@ std::string emitCMakeLists(const CodePlan &Plan, const std::vector<std::string> 
   for (const std::string &H : PackageHints)
     OS << "\n  \"" << H << "\"";
   OS << ")\n\n"
-     << "add_executable(" << Target << " " << Plan.sourceName() << ")\n"
+     << "add_executable(" << Target << " " << cmakeArgument(Plan.sourceName()) << ")\n"
      << "target_include_directories(" << Target << " PRIVATE \"${CMAKE_CURRENT_SOURCE_DIR}\")\n"
      << "target_link_libraries(" << Target << " PRIVATE wash::" << backendName(Plan.Target)
      << ")\n";

@@ -5,11 +5,11 @@
 #include "clang/AST/ParentMapContext.h"
 #include "clang/AST/RecursiveASTVisitor.h"
 #include "clang/Lex/Lexer.h"
-#include "clang/Rewrite/Core/Rewriter.h"
 #include "llvm/Support/Regex.h"
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -30,9 +30,81 @@ bool isParticleVector(QualType T) {
   return Spec && Spec->getName() == "vector" && involvesParticle(T);
 }
 
+/// The user's file with replacements of ranges of its text. A replacement
+/// may cover earlier ones (the lowering is post-order: an access's arguments
+/// are lowered before it). Edits are found by offset, so the text of a range
+/// costs its length; clang's Rewriter walks the buffer from its start for
+/// each, which made long kernels quadratic.
+class Edits {
+public:
+  Edits(SourceManager &SM, const LangOptions &LangOpts)
+      : SM(SM), LangOpts(LangOpts), Main(SM.getMainFileID()), Buffer(SM.getBufferData(Main)) {}
+
+  /// The text of a token range as rewritten so far ("" in a macro).
+  std::string text(SourceRange Range) const {
+    if (Range.getBegin().isMacroID() || Range.getEnd().isMacroID())
+      return "";
+    auto [Begin, End] = offsets(Range);
+    if (SM.getFileID(Range.getBegin()) != Main)
+      return Lexer::getSourceText(CharSourceRange::getTokenRange(Range), SM, LangOpts).str();
+    std::string Out;
+    unsigned At = Begin;
+    for (auto I = Replaced.lower_bound(Begin); I != Replaced.end() && I->first < End; ++I) {
+      Out.append(Buffer.substr(At, I->first - At));
+      Out += I->second.second;
+      At = std::max(At, I->second.first);
+    }
+    if (At < End)
+      Out.append(Buffer.substr(At, End - At));
+    return Out;
+  }
+
+  /// Replaces a token range of the main file; the replacements inside it go.
+  void replace(SourceRange Range, std::string Text) {
+    if (SM.getFileID(Range.getBegin()) != Main)
+      return;
+    auto [Begin, End] = offsets(Range);
+    replace(Begin, End, std::move(Text));
+  }
+
+  void replace(unsigned Begin, unsigned End, std::string Text) {
+    Replaced.erase(Replaced.lower_bound(Begin), Replaced.lower_bound(End));
+    Replaced[Begin] = {End, std::move(Text)};
+  }
+
+  bool empty() const { return Replaced.empty(); }
+  std::string result() const {
+    std::string Out;
+    unsigned At = 0;
+    for (const auto &[Begin, Edit] : Replaced) {
+      if (Begin < At) // overlaps the one before: cannot happen post-order
+        continue;
+      Out.append(Buffer.substr(At, Begin - At));
+      Out += Edit.second;
+      At = Edit.first;
+    }
+    return Out.append(Buffer.substr(At));
+  }
+
+private:
+  std::pair<unsigned, unsigned> offsets(SourceRange Range) const {
+    unsigned Begin = SM.getFileOffset(Range.getBegin());
+    unsigned End =
+        SM.getFileOffset(Range.getEnd()) + Lexer::MeasureTokenLength(Range.getEnd(), SM, LangOpts);
+    return {Begin, std::max(Begin, End)};
+  }
+
+  SourceManager &SM;
+  const LangOptions &LangOpts;
+  FileID Main;
+  StringRef Buffer;
+  /// Begin offset -> (end offset, new text), non-overlapping.
+  std::map<unsigned, std::pair<unsigned, std::string>> Replaced;
+};
+
 class Lowering : public RecursiveASTVisitor<Lowering> {
 public:
-  Lowering(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D, Rewriter &R)
+  Lowering(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D, Edits &R)
       : Ctx(Ctx), SM(Ctx.getSourceManager()), Plan(Plan), D(D), R(R) {}
 
   // Children first, so that an access's arguments are lowered before it.
@@ -132,8 +204,7 @@ public:
       StringRef Line =
           Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
       if (Include.match(Line)) {
-        SourceLocation Begin = SM.getLocForStartOfFile(Main).getLocWithOffset(Offset);
-        R.ReplaceText(Begin, Line.size(), "#include \"" + Plan.headerName() + "\"");
+        R.replace(Offset, Offset + Line.size(), "#include \"" + Plan.headerName() + "\"");
         return;
       }
       if (End == StringRef::npos)
@@ -171,9 +242,7 @@ private:
   }
 
   /// The text of a range as rewritten so far.
-  std::string text(SourceRange Range) const {
-    return R.getRewrittenText(CharSourceRange::getTokenRange(Range));
-  }
+  std::string text(SourceRange Range) const { return R.text(Range); }
 
   /// What a dropped registration did, for the comment that replaces it: the
   /// call as written, whitespace collapsed except for newlines (the line
@@ -225,7 +294,7 @@ private:
     size_t NewLines = std::count(Text.begin(), Text.end(), '\n');
     if (NewLines < Lines)
       Text.append(Lines - NewLines, '\n');
-    R.ReplaceText(CharSourceRange::getTokenRange(Range), Text);
+    R.replace(Range, std::move(Text));
     return true;
   }
 
@@ -233,23 +302,20 @@ private:
   SourceManager &SM;
   const CodePlan &Plan;
   Diagnoser &D;
-  Rewriter &R;
+  Edits &R;
   std::set<std::pair<unsigned, unsigned>> Done;
 };
 
 } // namespace
 
 std::optional<std::string> rewriteSource(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D) {
-  Rewriter R(Ctx.getSourceManager(), Ctx.getLangOpts());
+  Edits R(Ctx.getSourceManager(), Ctx.getLangOpts());
   Lowering L(Ctx, Plan, D, R);
   L.TraverseDecl(Ctx.getTranslationUnitDecl());
   L.replaceApiInclude();
   if (D.hasErrors())
     return std::nullopt;
-  FileID Main = Ctx.getSourceManager().getMainFileID();
-  if (const RewriteBuffer *B = R.getRewriteBufferFor(Main))
-    return std::string(B->begin(), B->end());
-  return Ctx.getSourceManager().getBufferData(Main).str();
+  return R.result();
 }
 
 } // namespace wash::tr

@@ -5,6 +5,8 @@
 #include "clang/AST/ASTConsumer.h"
 #include "clang/Frontend/CompilerInstance.h"
 #include "clang/Frontend/FrontendAction.h"
+#include "clang/Frontend/TextDiagnosticPrinter.h"
+#include "clang/Lex/Lexer.h"
 #include "clang/Tooling/ArgumentsAdjusters.h"
 #include "clang/Tooling/CompilationDatabase.h"
 #include "clang/Tooling/Tooling.h"
@@ -18,6 +20,9 @@ using namespace clang;
 
 namespace wash::tr {
 namespace {
+
+/// The largest simulation file wash reads.
+constexpr uint64_t MaxSourceBytes = uint64_t(64) << 20;
 
 using Callback = std::function<void(ASTContext &, Diagnoser &, unsigned)>;
 
@@ -89,13 +94,118 @@ unsigned definedDim(const std::vector<std::string> &Args) {
   return Dim;
 }
 
+/// Why Source cannot be a simulation file ("" if it can be read): a device,
+/// FIFO or directory would make clang read forever or fail obscurely, and an
+/// unbounded file exhausts memory.
+std::string unreadableReason(const std::string &Source) {
+  llvm::sys::fs::file_status Status;
+  if (std::error_code EC = llvm::sys::fs::status(Source, Status))
+    return EC.message();
+  if (Status.type() == llvm::sys::fs::file_type::directory_file)
+    return "it is a directory";
+  if (Status.type() != llvm::sys::fs::file_type::regular_file)
+    return "it is not a regular file";
+  if (Status.getSize() > MaxSourceBytes)
+    return "it is larger than " + std::to_string(MaxSourceBytes >> 20) +
+           " MB; a simulation file must be smaller";
+  return "";
+}
+
+/// Limits on what clang's parser handles by recursion and that no bracket
+/// limit (-fbracket-depth) bounds: past them it overflows even the large
+/// stack it runs on, or takes minutes (an else-if chain is quadratic).
+constexpr unsigned MaxPrefixOperators = 1000;
+constexpr unsigned MaxElseIfChain = 16384;
+constexpr unsigned MaxConditionalChain = 10000;
+
+/// Where a raw token starts in Text.
+size_t offsetOf(const Token &Tok, SourceLocation Start) {
+  return Tok.getLocation().getRawEncoding() - Start.getRawEncoding();
+}
+
+/// "file:line:col: error: too deeply nested ..." at the first construct of
+/// Text nested past a limit, or "" if none is. A raw lexing pass, so it
+/// runs before clang's parser could overflow its stack.
+std::string nestingError(const std::string &File, llvm::StringRef Text) {
+  LangOptions LangOpts;
+  LangOpts.CPlusPlus = LangOpts.CPlusPlus20 = true;
+  SourceLocation Start = SourceLocation::getFromRawEncoding(1);
+  Lexer Lex(Start, LangOpts, Text.begin(), Text.begin(), Text.end());
+  unsigned Prefix = 0, Conditionals = 0;
+  size_t RunStart = 0;
+  // Per open brace: else-if branches so far in the chain of that block.
+  std::vector<unsigned> ElseIfs(1, 0);
+  tok::TokenKind Last = tok::semi;
+  auto Error = [&](size_t Offset, const std::string &What) {
+    size_t Line = Text.take_front(Offset).count('\n') + 1;
+    size_t LineStart = Text.take_front(Offset).rfind('\n');
+    size_t Col = Offset - (LineStart == llvm::StringRef::npos ? 0 : LineStart + 1) + 1;
+    return File + ":" + std::to_string(Line) + ":" + std::to_string(Col) +
+           ": error: too deeply nested: " + What + "; wash (and clang's parser) cannot " +
+           "translate it: split it into smaller statements or functions";
+  };
+  Token Tok;
+  while (true) {
+    Lex.LexFromRawLexer(Tok);
+    if (Tok.is(tok::eof))
+      break;
+    tok::TokenKind K = Tok.getKind();
+    // A prefix operator follows an operator or an opening bracket, not an
+    // operand: `a - -b` has one.
+    bool AfterOperand = Last == tok::identifier || Last == tok::numeric_constant ||
+                        Last == tok::r_paren || Last == tok::r_square ||
+                        Last == tok::string_literal || Last == tok::char_constant;
+    bool IsPrefix =
+        !AfterOperand &&
+        (K == tok::minus || K == tok::plus || K == tok::exclaim || K == tok::tilde ||
+         K == tok::star || K == tok::amp || K == tok::plusplus || K == tok::minusminus ||
+         K == tok::raw_identifier &&
+             (Tok.getRawIdentifier() == "sizeof" || Tok.getRawIdentifier() == "throw"));
+    if (IsPrefix) {
+      if (Prefix++ == 0)
+        RunStart = offsetOf(Tok, Start);
+      if (Prefix > MaxPrefixOperators)
+        return Error(RunStart, "more than " + std::to_string(MaxPrefixOperators) +
+                                   " prefix operators in a row");
+    } else {
+      Prefix = 0;
+    }
+    if (K == tok::question && ++Conditionals > MaxConditionalChain)
+      return Error(offsetOf(Tok, Start), "more than " + std::to_string(MaxConditionalChain) +
+                                             " conditional operators in one statement");
+    if (K == tok::semi || K == tok::l_brace || K == tok::r_brace)
+      Conditionals = 0;
+    if (K == tok::l_brace)
+      ElseIfs.push_back(0);
+    if (K == tok::r_brace && ElseIfs.size() > 1)
+      ElseIfs.pop_back();
+    if (K == tok::raw_identifier && Tok.getRawIdentifier() == "if" && Last == tok::raw_identifier &&
+        ++ElseIfs.back() > MaxElseIfChain)
+      return Error(offsetOf(Tok, Start),
+                   "an else-if chain of more than " + std::to_string(MaxElseIfChain) + " branches");
+    // Raw identifiers keep their kind; remember `else` to spot `else if`.
+    Last = K == tok::raw_identifier
+               ? (Tok.getRawIdentifier() == "else" ? tok::raw_identifier : tok::identifier)
+               : K;
+  }
+  return "";
+}
+
 } // namespace
 
 bool parseSimulation(const Options &Opts, const Callback &OnAST) {
+  if (std::string Reason = unreadableReason(Opts.Source); !Reason.empty()) {
+    llvm::errs() << "wash: error: cannot read '" << Opts.Source << "': " << Reason << "\n";
+    return false;
+  }
   auto Buffer = llvm::MemoryBuffer::getFile(Opts.Source);
   if (!Buffer) {
     llvm::errs() << "wash: error: cannot read '" << Opts.Source
                  << "': " << Buffer.getError().message() << "\n";
+    return false;
+  }
+  if (std::string Error = nestingError(Opts.Source, (*Buffer)->getBuffer()); !Error.empty()) {
+    llvm::errs() << Error << "\n";
     return false;
   }
   unsigned UserDim = definedDim(Opts.CompilerArgs);
@@ -113,13 +223,20 @@ bool parseSimulation(const Options &Opts, const Callback &OnAST) {
   Tool.appendArgumentsAdjuster(
       tooling::getInsertArgumentAdjuster(Baked, tooling::ArgumentInsertPosition::BEGIN));
 
+  // One printer for the driver's and the compiler's diagnostics, so that an
+  // error either reports (an unknown flag, say) fails the run: ClangTool
+  // itself returns 0 after a driver error.
+  llvm::IntrusiveRefCntPtr<DiagnosticOptions> DiagOpts = new DiagnosticOptions();
+  TextDiagnosticPrinter Printer(llvm::errs(), DiagOpts.get());
+  Tool.setDiagnosticConsumer(&Printer);
+
   Factory F(OnAST, Dim);
   int Status = 1;
   // Deeply nested hostile input must not overflow the stack: run clang and
   // the passes, which recurse over the AST, on a thread with a large one.
   llvm::thread Worker(std::optional<unsigned>(512u << 20), [&] { Status = Tool.run(&F); });
   Worker.join();
-  return Status == 0;
+  return Status == 0 && Printer.getNumErrors() == 0;
 }
 
 } // namespace wash::tr

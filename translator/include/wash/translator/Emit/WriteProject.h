@@ -11,8 +11,10 @@ struct GeneratedFile {
   std::string Text;
 };
 
-/// Writes Files into Dir (created if needed). Each file is written to a
-/// temporary name first and renamed, so an error leaves no partial file.
+/// Writes Files into Dir (created if needed) as a whole: staged beside Dir
+/// and renamed into place, so an error leaves the previous content. Dir must
+/// be new, empty or a previous wash project (it holds the marker file
+/// `.wash-project` listing what wash wrote); other files in it are kept.
 /// Returns an error message, or "" on success.
 std::string writeProject(const std::string &Dir, const std::vector<GeneratedFile> &Files);
 

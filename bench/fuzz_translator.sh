@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# fuzz_translator.sh - a bounded fuzzing run of the translator's front end.
+#
+# With AFL++ installed (Debian package afl++): afl-fuzz in non-instrumented
+# mode (-n) on the wash binary, seeded with the examples, for --seconds;
+# crashes and hangs land in DIR/afl/default/{crashes,hangs}. Without it (this
+# project's machines have neither AFL++ nor a libFuzzer runtime for clang
+# 19): rounds of the mutation corpus (test/translator/corpus/mutate.py) with
+# fresh seeds until --seconds are spent; every problem is printed. Nothing
+# is asserted: this is a benchmark; see docs/performance.md for results.
+#
+# usage: bench/fuzz_translator.sh [--build DIR] [--seconds S] [--out DIR]
+set -euo pipefail
+build=build
+seconds=300
+out=$(mktemp -d)
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --build) build=$2; shift 2 ;;
+    --seconds) seconds=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    *) echo "usage: $0 [--build DIR] [--seconds S] [--out DIR]" >&2; exit 2 ;;
+  esac
+done
+src=$(cd "$(dirname "$0")/.." && pwd)
+wash=$(cd "$build" && pwd)/bin/wash
+[[ -x $wash ]] || { echo "no $wash: build the translator first" >&2; exit 1; }
+mkdir -p "$out"
+
+if command -v afl-fuzz > /dev/null; then
+  mkdir -p "$out/seeds"
+  cp "$src"/examples/*/*.cpp "$out/seeds/"
+  AFL_SKIP_CPUFREQ=1 AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES=1 \
+    timeout "$seconds" afl-fuzz -n -t 20000 -i "$out/seeds" -o "$out/afl" -- \
+    "$wash" --dump-model @@ || true
+  echo "crashes: $(ls "$out/afl/default/crashes" 2>/dev/null | grep -vc README || true)"
+  echo "hangs: $(ls "$out/afl/default/hangs" 2>/dev/null | wc -l)"
+  exit 0
+fi
+
+echo "afl-fuzz not found: rounds of the mutation corpus for $seconds s"
+end=$(( $(date +%s) + seconds ))
+round=0
+while (( $(date +%s) < end )); do
+  round=$((round + 1))
+  seed=$(( 1000 + round ))
+  python3 "$src/test/translator/corpus/mutate.py" --wash "$wash" --examples "$src/examples" \
+    --count 56 --seed "$seed" --keep "$out/round-$round" | tail -n 20 || true
+done
+echo "$round rounds of 56 mutants; the mutants are in $out"
