@@ -8,6 +8,10 @@ file:line:col, the exit status is non-zero exactly when an error was
 printed, nothing on stdout after an error, and no output folder after an
 error (every fourth mutant is translated into a real folder; the others use
 --dump-model). Prints a summary and each problem; exits 1 if there is one.
+
+With --clang, the standard headers the wash API includes are precompiled
+once and every run gets -include-pch: parsing them is most of a run's time,
+and the mutants are about the simulation's own text, not the library's.
 """
 import argparse
 import glob
@@ -62,10 +66,32 @@ def mutate(text, rng):
     return kind, b"\n".join(lines)
 
 
+def precompile(clang, api_dir, work):
+    """A PCH of the standard headers the API headers include, or None (with
+    the reason printed) if clang cannot build one wash can use."""
+    headers = set()
+    for header in glob.glob(os.path.join(api_dir, "wash", "*.hpp")):
+        headers.update(re.findall(r"^#include <([a-z_]+)>", open(header).read(), re.M))
+    source = os.path.join(work, "std.hpp")
+    with open(source, "w") as f:
+        f.writelines("#include <%s>\n" % h for h in sorted(headers))
+    pch = source + ".pch"
+    resource = subprocess.run([clang, "-print-resource-dir"], capture_output=True, text=True)
+    build = subprocess.run([clang, "-x", "c++-header", "-std=c++20",
+                            "-resource-dir=" + resource.stdout.strip(), source, "-o", pch],
+                           capture_output=True, text=True)
+    if build.returncode != 0:
+        print("no precompiled header (runs parse every header):", build.stderr[:500])
+        return None
+    return pch
+
+
 def check(job):
     """Runs wash on one mutant; returns a list of problems (strings)."""
-    wash, path, out, timeout = job
+    wash, path, out, timeout, pch = job
     cmd = [wash, "--backend=serial", "-o", out, path] if out else [wash, "--dump-model", path]
+    if pch:
+        cmd += ["--", "-include-pch", pch]
     try:
         p = subprocess.run(cmd, capture_output=True, timeout=timeout)
     except subprocess.TimeoutExpired:
@@ -99,12 +125,16 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--timeout", type=int, default=60)
     ap.add_argument("--keep", help="folder to keep the mutants in")
+    ap.add_argument("--clang", help="clang++ of wash's LLVM, to precompile the std headers")
     args = ap.parse_args()
 
     sources = sorted(glob.glob(os.path.join(args.examples, "*", "*.cpp")))
     rng = random.Random(args.seed)
     work = args.keep or tempfile.mkdtemp(prefix="wash-mutants-")
     os.makedirs(work, exist_ok=True)
+    api_dir = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
+                           "runtime", "include")
+    pch = precompile(args.clang, api_dir, work) if args.clang else None
     jobs, kinds = [], []
     for i in range(args.count):
         src = sources[i % len(sources)]
@@ -115,12 +145,12 @@ def main():
         with open(path, "wb") as f:
             f.write(text)
         out = os.path.join(folder, "out") if i % 4 == 0 else None
-        jobs.append((args.wash, path, out, args.timeout))
+        jobs.append((args.wash, path, out, args.timeout, pch))
         kinds.append(kind)
     with ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(check, jobs))
     failed = 0
-    for (wash, path, out, _), kind, problems in zip(jobs, kinds, results):
+    for (wash, path, out, _, _), kind, problems in zip(jobs, kinds, results):
         for problem in problems:
             print("PROBLEM %s (%s%s): %s" % (path, kind, ", -o" if out else "", problem))
         failed += bool(problems)
