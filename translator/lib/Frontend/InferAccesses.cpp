@@ -208,7 +208,8 @@ void KernelAnalyser::call(const CallExpr *CE) {
     return;
   }
   if (isWashCall(FD, ApiCall::set_variable) &&
-      (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)) {
+      (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
+       K.Kind == KernelKind::Reduction)) {
     D.report(DiagId::VariableWriteInParticleKernel, CE->getBeginLoc(),
              {kernelKindName(K.Kind), K.Function});
     return;
