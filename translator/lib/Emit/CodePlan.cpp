@@ -26,8 +26,12 @@ std::string memberFor(const std::string &Name, unsigned Index, const std::set<st
       "int",    "long",   "new",      "operator", "private", "public",   "return",       "short",
       "signed", "sizeof", "static",   "struct",   "switch",  "template", "this",         "throw",
       "try",    "union",  "unsigned", "void",     "while",   "size",     "forEachColumn"};
-  if (isIdentifier(Name) && !Taken.count(Name) && !Reserved.count(Name) &&
-      Name.rfind("__", 0) != 0 && Name.rfind("force_", 0) != 0)
+  // Names starting with two underscores or one and a capital are the
+  // implementation's (its macros among them).
+  bool ImplementationName = Name.rfind("__", 0) == 0 || (Name.size() > 1 && Name[0] == '_' &&
+                                                         std::isupper((unsigned char)Name[1]));
+  if (isIdentifier(Name) && !Taken.count(Name) && !Reserved.count(Name) && !ImplementationName &&
+      Name.rfind("force_", 0) != 0)
     return Name;
   std::string Mangled = "force_" + std::to_string(Index) + "_";
   for (char C : Name)

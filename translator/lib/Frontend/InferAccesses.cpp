@@ -1,5 +1,6 @@
 //===- InferAccesses.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/InferAccesses.h"
+#include "wash/translator/Frontend/ForceName.h"
 #include "wash/translator/Frontend/ParticleRoles.h"
 #include "wash/translator/Frontend/WashApi.h"
 
@@ -257,11 +258,9 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
     if (CE->getNumArgs() <= FirstArg)
       return;
     const Expr *NameArg = CE->getArg(FirstArg);
-    auto Name = evaluateString(NameArg, Ctx);
-    if (!Name) {
-      D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
+    auto Name = forceName(NameArg, Ctx, D);
+    if (!Name)
       return;
-    }
     Field = *Name;
     Kind = P->Kind;
   } else {
