@@ -8,6 +8,7 @@
 //
 //===----------------------------------------------------------------------===//
 #include "wash/translator/Pipeline.h"
+#include "wash/translator/Analysis/ForceUses.h"
 #include "wash/translator/Analysis/Hazards.h"
 #include "wash/translator/Analysis/Liveness.h"
 #include "wash/translator/Analysis/ResolveFields.h"
@@ -137,6 +138,10 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
   storeLiveness(M, computeLiveness(M.Fields, M.Kernels));
   if (Stop(PassId::ComputeLiveness))
+    return;
+  std::vector<Finding> Uses = checkForceUses(M.Fields, M.Kernels);
+  M.Findings.insert(M.Findings.end(), Uses.begin(), Uses.end());
+  if (Stop(PassId::CheckForceUses))
     return;
   storeHazards(M, findHazards(M.Kernels));
   if (Stop(PassId::FindHazards))
