@@ -14,6 +14,7 @@
 #include "wash/translator/Analysis/ResolveFields.h"
 #include "wash/translator/Analysis/SummariseAccesses.h"
 #include "wash/translator/Emit/EmitProgram.h"
+#include "wash/translator/Frontend/CheckVariables.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/DetectDimension.h"
 #include "wash/translator/Frontend/FindAlwaysWrites.h"
@@ -119,6 +120,8 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   if (!detectDimension(Ctx, D, ParsedDim, M) || Stop(PassId::DetectDimension))
     return;
   if (!collectSimulation(Ctx, D, M, Refs) || Stop(PassId::CollectSimulation))
+    return;
+  if (!checkVariables(Ctx, D) || Stop(PassId::CheckVariables))
     return;
   if (!inferAccesses(Ctx, D, Refs, M) || Stop(PassId::InferAccesses))
     return;
