@@ -8,11 +8,13 @@
 //
 //===----------------------------------------------------------------------===//
 #include "wash/translator/Pipeline.h"
+#include "wash/translator/Analysis/ForceUses.h"
 #include "wash/translator/Analysis/Hazards.h"
 #include "wash/translator/Analysis/Liveness.h"
 #include "wash/translator/Analysis/ResolveFields.h"
 #include "wash/translator/Analysis/SummariseAccesses.h"
 #include "wash/translator/Emit/EmitProgram.h"
+#include "wash/translator/Frontend/CheckVariables.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/DetectDimension.h"
 #include "wash/translator/Frontend/FindAlwaysWrites.h"
@@ -119,6 +121,8 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
   if (!collectSimulation(Ctx, D, M, Refs) || Stop(PassId::CollectSimulation))
     return;
+  if (!checkVariables(Ctx, D) || Stop(PassId::CheckVariables))
+    return;
   if (!inferAccesses(Ctx, D, Refs, M) || Stop(PassId::InferAccesses))
     return;
   findNeighbourDistances(Ctx, D, M);
@@ -137,6 +141,10 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
   storeLiveness(M, computeLiveness(M.Fields, M.Kernels));
   if (Stop(PassId::ComputeLiveness))
+    return;
+  std::vector<Finding> Uses = checkForceUses(M.Fields, M.Kernels);
+  M.Findings.insert(M.Findings.end(), Uses.begin(), Uses.end());
+  if (Stop(PassId::CheckForceUses))
     return;
   storeHazards(M, findHazards(M.Kernels));
   if (Stop(PassId::FindHazards))

@@ -8,7 +8,7 @@ constexpr const char *kHeat = "heat";
 const std::string kCold = "cold";
 
 void update(wash::Particle &p) {
-  p.set_force_scalar(kHeat, p.get_force_scalar(kCold) + 1);
+  p.set_force_scalar(kHeat, p.get_force_scalar(kCold) + 1), p.set_force_scalar(kCold, 0.0);
 }
 
 int main() {
@@ -21,4 +21,4 @@ int main() {
 // CHECK-NEXT: cold: registered scalar live @16:19
 // CHECK:      0: update update
 // CHECK-NEXT:   own-reads: cold
-// CHECK-NEXT:   own-writes: heat
+// CHECK-NEXT:   own-writes: heat cold

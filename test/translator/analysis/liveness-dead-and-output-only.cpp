@@ -5,7 +5,7 @@
 // RUN: FileCheck %s --check-prefix=WARN < %t.err
 #include <wash/wash.hpp>
 
-void update(wash::Particle &p) { p.set_force_scalar("written", p.get_force_scalar("read")); }
+void update(wash::Particle &p) { p.set_force_scalar("written", p.get_force_scalar("read") + 1), p.set_force_scalar("read", 0.0); }
 
 int main() {
   wash::add_force("read", 1);

@@ -151,12 +151,14 @@ int main() {
 
 // LIST:      detect-dimension
 // LIST-NEXT: collect-simulation
+// LIST-NEXT: check-variables
 // LIST-NEXT: infer-accesses
 // LIST-NEXT: find-neighbour-distances
 // LIST-NEXT: find-always-writes
 // LIST-NEXT: summarise-accesses
 // LIST-NEXT: resolve-fields
 // LIST-NEXT: compute-liveness
+// LIST-NEXT: check-force-uses
 // LIST-NEXT: find-hazards
 // LIST-NEXT: plan-neighbour-search
 // LIST-NEXT: plan-neighbour-distances
@@ -164,6 +166,6 @@ int main() {
 // LIST-NEXT: plan-halos
 // LIST-NOT:  {{.}}
 
-// UNKNOWN: wash: error: unknown pass 'nope'; passes are: detect-dimension, collect-simulation, infer-accesses, find-neighbour-distances, find-always-writes, summarise-accesses, resolve-fields, compute-liveness, find-hazards, plan-neighbour-search, plan-neighbour-distances, plan-search-reorder, plan-halos{{$}}
+// UNKNOWN: wash: error: unknown pass 'nope'; passes are: detect-dimension, collect-simulation, check-variables, infer-accesses, find-neighbour-distances, find-always-writes, summarise-accesses, resolve-fields, compute-liveness, check-force-uses, find-hazards, plan-neighbour-search, plan-neighbour-distances, plan-search-reorder, plan-halos{{$}}
 
 // HELP: --dump-after=<pass> {{ *}}- Print the model right after the named pass and stop ('help' lists them)

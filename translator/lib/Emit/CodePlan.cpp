@@ -26,8 +26,12 @@ std::string memberFor(const std::string &Name, unsigned Index, const std::set<st
       "int",    "long",   "new",      "operator", "private", "public",   "return",       "short",
       "signed", "sizeof", "static",   "struct",   "switch",  "template", "this",         "throw",
       "try",    "union",  "unsigned", "void",     "while",   "size",     "forEachColumn"};
-  if (isIdentifier(Name) && !Taken.count(Name) && !Reserved.count(Name) &&
-      Name.rfind("__", 0) != 0 && Name.rfind("force_", 0) != 0)
+  // Names starting with two underscores or one and a capital are the
+  // implementation's (its macros among them).
+  bool ImplementationName = Name.rfind("__", 0) == 0 || (Name.size() > 1 && Name[0] == '_' &&
+                                                         std::isupper((unsigned char)Name[1]));
+  if (isIdentifier(Name) && !Taken.count(Name) && !Reserved.count(Name) && !ImplementationName &&
+      Name.rfind("force_", 0) != 0)
     return Name;
   std::string Mangled = "force_" + std::to_string(Index) + "_";
   for (char C : Name)
@@ -51,8 +55,12 @@ std::string CodePlan::apiType(const Field &F) const {
   return F.Kind == ForceKind::Vector ? "wash::ParticleVec" : "double";
 }
 
-std::string CodePlan::readText(const std::string &Name, const std::string &Object) const {
-  const Field &F = *ByName.at(Name);
+std::string CodePlan::readText(const std::string &Name, const std::string &Object,
+                               ForceKind Kind) const {
+  auto Known = ByName.find(Name);
+  if (Known == ByName.end()) // Only in code no kernel runs: no field, no storage.
+    return Kind == ForceKind::Vector ? "wash::ParticleVec()" : "double()";
+  const Field &F = *Known->second;
   if (!F.Live) // Never written: it reads as zero.
     return apiType(F) + "()";
   if (Snapshotted.count(Name))
@@ -66,7 +74,9 @@ std::string CodePlan::readText(const std::string &Name, const std::string &Objec
 std::string CodePlan::writeText(const std::string &Name, const std::string &Object,
                                 const std::string &Value) const {
   auto It = Member.find(Name);
-  if (It == Member.end()) // Dead (acc, never read nor output): keep the value's side effects.
+  // Dead (acc, never read nor output) or only in code no kernel runs: keep
+  // the value's side effects.
+  if (It == Member.end())
     return "(void)(" + Value + ")";
   std::string Target = "wash_gen::P." + It->second + "[" + Object + "]";
   if (!Float)

@@ -125,6 +125,23 @@ std::string fieldList(const std::vector<std::string> &Fields) {
   return L;
 }
 
+/// S as a C++ string literal: a variable name may hold any character.
+static std::string stringLiteral(const std::string &S) {
+  std::string L = "\"";
+  for (char C : S) {
+    if (C == '"' || C == '\\')
+      L += '\\';
+    if (C >= 0x20 && C < 0x7f) {
+      L += C;
+      continue;
+    }
+    const char *Octal = "01234567";
+    unsigned char U = static_cast<unsigned char>(C);
+    L += {'\\', Octal[U >> 6], Octal[(U >> 3) & 7], Octal[U & 7]};
+  }
+  return L + "\"";
+}
+
 void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee) {
   std::string Op = K.ReduceOp == "sum" ? "Sum" : K.ReduceOp == "min" ? "Min" : "Max";
   OS << "    {\n"
@@ -134,8 +151,8 @@ void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee)
      << "        Self self{i};\n"
      << "        values[i] = " << Callee << "(self);\n"
      << "      });\n"
-     << "      " << rt::SetVariable << "(\"" << K.Variable << "\", backend.reduce(P.id, values, "
-     << rt::ReduceOp << "::" << Op << "));\n"
+     << "      " << rt::SetVariable << "(" << stringLiteral(K.Variable)
+     << ", backend.reduce(P.id, values, " << rt::ReduceOp << "::" << Op << "));\n"
      << "    }\n";
 }
 

@@ -172,7 +172,7 @@ public:
     if (IsSet)
       Value = text(E->getArg(ValueArg)->getSourceRange());
     std::string Lowered =
-        IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object);
+        IsSet ? Plan.writeText(Field, Object, Value) : Plan.readText(Field, Object, Accessor->Kind);
     if (IsSet && !isStatement(E))
       Lowered = "(" + Lowered + ")";
     return replace(E->getSourceRange(), Lowered);

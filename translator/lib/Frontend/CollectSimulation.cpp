@@ -1,6 +1,7 @@
 //===- CollectSimulation.cpp ----------------------------------------------===//
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/CheckRegistrationFlow.h"
+#include "wash/translator/Frontend/ForceName.h"
 #include "wash/translator/Frontend/ResolveKernel.h"
 #include "wash/translator/Frontend/WashApi.h"
 
@@ -174,11 +175,9 @@ private:
 
   void addForce(const CallExpr *CE) {
     const Expr *NameArg = CE->getArg(0), *DimArg = CE->getArg(1);
-    auto Name = evaluateString(NameArg, Ctx);
-    if (!Name) {
-      D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
+    auto Name = forceName(NameArg, Ctx, D);
+    if (!Name)
       return;
-    }
     unsigned SimDim = M.Sim.Dimension;
     auto Dim = evaluateInt(DimArg, Ctx);
     if (!Dim) {

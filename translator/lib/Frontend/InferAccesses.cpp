@@ -1,5 +1,6 @@
 //===- InferAccesses.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/InferAccesses.h"
+#include "wash/translator/Frontend/ForceName.h"
 #include "wash/translator/Frontend/ParticleRoles.h"
 #include "wash/translator/Frontend/WashApi.h"
 
@@ -235,7 +236,8 @@ void KernelAnalyser::call(const CallExpr *CE) {
     return;
   }
   if (isWashCall(FD, ApiCall::set_variable) &&
-      (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)) {
+      (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
+       K.Kind == KernelKind::Reduction)) {
     D.report(DiagId::VariableWriteInParticleKernel, CE->getBeginLoc(),
              {kernelKindName(K.Kind), K.Function});
     return;
@@ -287,11 +289,9 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
     if (CE->getNumArgs() <= FirstArg)
       return;
     const Expr *NameArg = CE->getArg(FirstArg);
-    auto Name = evaluateString(NameArg, Ctx);
-    if (!Name) {
-      D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
+    auto Name = forceName(NameArg, Ctx, D);
+    if (!Name)
       return;
-    }
     Field = *Name;
     Kind = P->Kind;
   } else {

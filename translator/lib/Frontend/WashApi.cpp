@@ -90,6 +90,17 @@ bool isUserCode(const SourceManager &SM, const Decl *D) {
   return L.isValid() && !SM.isInSystemHeader(SM.getExpansionLoc(L));
 }
 
+/// A construction from its first argument alone, the rest defaulted (an
+/// allocator): not std::string(s, n), which keeps n characters of s.
+static bool convertsOneArgument(const CXXConstructExpr *CE) {
+  if (CE->getNumArgs() == 0 || isa<CXXDefaultArgExpr>(CE->getArg(0)))
+    return false;
+  for (unsigned I = 1; I < CE->getNumArgs(); ++I)
+    if (!isa<CXXDefaultArgExpr>(CE->getArg(I)))
+      return false;
+  return true;
+}
+
 static const Expr *stripStringWrappers(const Expr *E) {
   while (true) {
     E = E->IgnoreParenImpCasts();
@@ -101,8 +112,7 @@ static const Expr *stripStringWrappers(const Expr *E) {
       E = C->getSubExpr();
     else if (const auto *F = dyn_cast<CXXFunctionalCastExpr>(E))
       E = F->getSubExpr();
-    else if (const auto *CE = dyn_cast<CXXConstructExpr>(E);
-             CE && CE->getNumArgs() >= 1 && !isa<CXXDefaultArgExpr>(CE->getArg(0)))
+    else if (const auto *CE = dyn_cast<CXXConstructExpr>(E); CE && convertsOneArgument(CE))
       E = CE->getArg(0); // std::string(const char *) or a copy of a string.
     else
       return E;
@@ -112,8 +122,11 @@ static const Expr *stripStringWrappers(const Expr *E) {
 std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx) {
   for (unsigned Depth = 0; E && Depth < 16; ++Depth) {
     E = stripStringWrappers(E);
-    if (const auto *S = dyn_cast<StringLiteral>(E))
-      return S->getBytes().str();
+    // A literal reaches a std::string as a const char *: up to its first NUL.
+    if (const auto *S = dyn_cast<StringLiteral>(E); S && S->getCharByteWidth() == 1)
+      return S->getBytes().substr(0, S->getBytes().find('\0')).str();
+    if (isa<StringLiteral>(E))
+      return std::nullopt;
     if (E->getType()->isPointerType() && !E->isValueDependent())
       if (auto S = E->tryEvaluateString(Ctx))
         return S;

@@ -54,7 +54,9 @@ struct CodePlan {
   /// `P.<member>`: the column of a stored field.
   std::string readColumn(const std::string &Field) const { return "P." + Member.at(Field); }
   /// `P.<member>[Object]`, converted to the API type when storage is float.
-  std::string readText(const std::string &Field, const std::string &Object) const;
+  /// Kind is the accessor's: a force named only in code no kernel reaches
+  /// (a helper never called) has no field and reads as a zero of that kind.
+  std::string readText(const std::string &Field, const std::string &Object, ForceKind Kind) const;
   /// `P.<member>[Object] = Value`, converted to the storage type when float.
   std::string writeText(const std::string &Field, const std::string &Object,
                         const std::string &Value) const;

@@ -41,7 +41,8 @@ std::optional<unsigned> vecDimension(clang::QualType T);
 bool isUserCode(const clang::SourceManager &SM, const clang::Decl *D);
 
 /// The value of a string argument: a literal, a constant the evaluator can
-/// fold, or a const variable (std::string, const char *) initialised by one.
+/// fold, or a const variable (std::string, const char *) initialised by one,
+/// as C++ evaluates it (a literal up to its first NUL; not std::string(s, n)).
 std::optional<std::string> evaluateString(const clang::Expr *E, clang::ASTContext &Ctx);
 std::optional<long long> evaluateInt(const clang::Expr *E, clang::ASTContext &Ctx);
 /// Shortest text that reads back as the same double.
