@@ -81,7 +81,8 @@ def precompile(clang, api_dir, work):
                             "-resource-dir=" + resource.stdout.strip(), source, "-o", pch],
                            capture_output=True, text=True)
     if build.returncode != 0:
-        print("no precompiled header (runs parse every header):", build.stderr[:500])
+        print("no precompiled header (runs parse every header):", build.stderr[:500],
+              file=sys.stderr)
         return None
     return pch
 
