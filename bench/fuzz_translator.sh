@@ -41,8 +41,12 @@ if command -v afl-fuzz > /dev/null; then
   AFL_SKIP_CPUFREQ=1 AFL_I_DONT_CARE_ABOUT_MISSING_CRASHES=1 \
     timeout "$seconds" afl-fuzz -n -t 20000 -i "$out/seeds" -o "$out/afl" -- \
     "$wash" --dump-model @@ "${pch_args[@]}" || true
-  echo "crashes: $(ls "$out/afl/default/crashes" 2>/dev/null | grep -vc README || true)"
-  echo "hangs: $(ls "$out/afl/default/hangs" 2>/dev/null | wc -l)"
+  # AFL++ 4.04 writes its findings in -o itself; later versions in -o/default.
+  results=$out/afl
+  [[ -d $results/default ]] && results=$results/default
+  echo "executions: $(tail -n 1 "$results/plot_data" 2>/dev/null | cut -d, -f12 | tr -d ' ')"
+  echo "crashes: $(find "$results/crashes" -type f ! -name README.txt 2>/dev/null | wc -l)"
+  echo "hangs: $(find "$results/hangs" -type f 2>/dev/null | wc -l)"
   exit 0
 fi
 
