@@ -4,6 +4,6 @@
 
 namespace wash {
 
-void stop(std::source_location) { detail::runSettings().stopRequested = true; }
+void stop(CallSite) { detail::runSettings().stopRequested = true; }
 
 } // namespace wash

@@ -7,7 +7,7 @@
 #pragma once
 
 #include <cstdint>
-#include <source_location>
+#include <wash/call_site.hpp>
 #include <string>
 #include <vector>
 
@@ -15,17 +15,17 @@ namespace wash {
 
 /// Storage precision of every particle property: "double" or "float".
 void set_precision(const std::string &precision,
-                   std::source_location loc = std::source_location::current());
+                   CallSite loc = CallSite::current());
 /// Neighbours of a particle are the other particles within this distance.
 void set_influence_radius(double radius,
-                          std::source_location loc = std::source_location::current());
+                          CallSite loc = CallSite::current());
 /// Instead of one radius: the neighbours of particle i are the other particles
 /// within `support` * h_i of it, h_i being its smoothing length when the force
 /// kernel starts, listed in ascending id order. `support` is the kernel's
 /// support radius in units of h: 2 for the cubic spline or Wendland kernels
 /// written as W(r, h) with support 2h. Call this or set_influence_radius.
 void set_smoothing_length_support(double support,
-                                  std::source_location loc = std::source_location::current());
+                                  CallSite loc = CallSite::current());
 void set_simulation_name(const std::string &name);
 /// Base name of output files (default: the simulation name).
 void set_output_file_name(const std::string &name);
@@ -37,11 +37,11 @@ void set_max_iterations(std::uint64_t iterations);
 /// void kernels may set them (a per-particle kernel
 /// writing one would race with itself). Using a name never added is an error.
 void add_variable(const std::string &name, double initial,
-                  std::source_location loc = std::source_location::current());
+                  CallSite loc = CallSite::current());
 double get_variable(const std::string &name,
-                    std::source_location loc = std::source_location::current());
+                    CallSite loc = CallSite::current());
 void set_variable(const std::string &name, double value,
-                  std::source_location loc = std::source_location::current());
+                  CallSite loc = CallSite::current());
 
 /// The simulation box [lo, hi) and, per axis, whether it is periodic. On a
 /// periodic axis positions wrap into [lo, hi) and neighbours are found across
@@ -51,6 +51,6 @@ void set_variable(const std::string &name, double value,
 /// (lo and hi are given as x, y[, z] lists; see docs/semantics.md.)
 void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
                       const std::vector<bool> &periodic,
-                      std::source_location loc = std::source_location::current());
+                      CallSite loc = CallSite::current());
 
 } // namespace wash

@@ -17,7 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <source_location>
+#include <wash/call_site.hpp>
 #include <string>
 #include <vector>
 
@@ -42,7 +42,7 @@ struct ParticleStore;
 /// run with the caller's location).
 class Particle {
 public:
-  using Location = std::source_location;
+  using Location = CallSite;
 
   /// Creation index: 0, 1, 2, ... in the order create_particle was called.
   std::size_t get_id() const;
@@ -93,7 +93,7 @@ enum class Reduction { Sum, Min, Max };
 
 /// Registers a named property: dim 1 is a scalar, dim == WASH_DIM a vector.
 void add_force(const std::string &name, int dim,
-               std::source_location loc = std::source_location::current());
+               CallSite loc = CallSite::current());
 
 /// Kernels run in registration order: init kernels once, then every iteration
 /// each update kernel (per particle) and force kernel (per particle, with its
@@ -107,13 +107,13 @@ void add_void_kernel(VoidKernel kernel);
 /// A kernel run once per iteration at its place in the order: `variable` (added
 /// with add_variable) becomes the Sum, Min or Max over all particles of f(p).
 void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
-                          std::source_location loc = std::source_location::current());
+                          CallSite loc = CallSite::current());
 
 /// Adds a particle (only from an init kernel). The reference stays valid until
 /// the next create_particle call.
 Particle &create_particle(double density, double mass, double smoothingLength,
                           const ParticleVec &pos, const ParticleVec &vel,
-                          std::source_location loc = std::source_location::current());
+                          CallSite loc = CallSite::current());
 
 /// Runs the simulation: init kernels, then max_iterations iterations, writing
 /// output as the program options ask. Exits the program with a message on error.
@@ -122,7 +122,7 @@ void start();
 /// Ends the run after the current iteration, which then counts as the last
 /// one (its frame is written as the final output). For a run to a simulated
 /// end time: only void kernels may call it, so every rank agrees when.
-void stop(std::source_location loc = std::source_location::current());
+void stop(CallSite loc = CallSite::current());
 
 } // namespace wash
 

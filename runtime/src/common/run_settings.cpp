@@ -24,26 +24,26 @@ RunOptions &programOptions() {
 using detail::runSettings;
 using detail::usageErrorAt;
 
-void set_precision(const std::string &precision, std::source_location loc) {
+void set_precision(const std::string &precision, CallSite loc) {
   if (precision != "double" && precision != "float")
     usageErrorAt(loc, "precision must be \"double\" or \"float\", not \"" + precision + "\"");
   runSettings().useFloat = precision == "float";
 }
 
-void set_influence_radius(double radius, std::source_location loc) {
+void set_influence_radius(double radius, CallSite loc) {
   if (!(radius > 0.0) || !std::isfinite(radius))
     usageErrorAt(loc, "influence radius must be a positive number");
   runSettings().search.radius = radius;
 }
 
-void set_smoothing_length_support(double support, std::source_location loc) {
+void set_smoothing_length_support(double support, CallSite loc) {
   if (!(support > 0.0) || !std::isfinite(support))
     usageErrorAt(loc, "the support radius must be a positive multiple of h");
   runSettings().search.support = support;
 }
 
 void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,
-                      const std::vector<bool> &periodic, std::source_location loc) {
+                      const std::vector<bool> &periodic, CallSite loc) {
   detail::RunSettings &s = runSettings();
   if (!detail::setBox(s.box, s.dimensions, lo, hi, periodic))
     usageErrorAt(loc, "set_bounding_box needs " + std::to_string(s.dimensions) +

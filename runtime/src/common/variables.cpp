@@ -11,26 +11,26 @@ std::map<std::string, double> &variables() {
   return v;
 }
 
-void usageErrorAt(const std::source_location &loc, const std::string &message) {
+void usageErrorAt(const CallSite &loc, const std::string &message) {
   throw UsageError(std::string(loc.file_name()) + ":" + std::to_string(loc.line()) + ":" +
                    std::to_string(loc.column()) + ": error: " + message);
 }
 
 } // namespace detail
 
-void add_variable(const std::string &name, double initial, std::source_location loc) {
+void add_variable(const std::string &name, double initial, CallSite loc) {
   if (!detail::variables().emplace(name, initial).second)
     detail::usageErrorAt(loc, "variable '" + name + "' is added twice");
 }
 
-double get_variable(const std::string &name, std::source_location loc) {
+double get_variable(const std::string &name, CallSite loc) {
   auto it = detail::variables().find(name);
   if (it == detail::variables().end())
     detail::usageErrorAt(loc, "variable '" + name + "' was never added (wash::add_variable)");
   return it->second;
 }
 
-void set_variable(const std::string &name, double value, std::source_location loc) {
+void set_variable(const std::string &name, double value, CallSite loc) {
   auto it = detail::variables().find(name);
   if (it == detail::variables().end())
     detail::usageErrorAt(loc, "variable '" + name + "' was never added (wash::add_variable)");

@@ -44,7 +44,7 @@ void addKernel(detail::Kernel::Kind kind, void *function, const char *kindName) 
 
 } // namespace
 
-void add_force(const std::string &name, int dim, std::source_location loc) {
+void add_force(const std::string &name, int dim, CallSite loc) {
   if (dim != 1 && dim != dimensions)
     usageError(loc, "force '" + name + "' has dimension " + std::to_string(dim) +
                         "; use 1 (scalar) or " + std::to_string(dimensions) +
@@ -69,7 +69,7 @@ void add_void_kernel(VoidKernel kernel) {
   addKernel(detail::Kernel::Void, reinterpret_cast<void *>(kernel), "void");
 }
 void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
-                          std::source_location loc) {
+                          CallSite loc) {
   get_variable(variable, loc); // it must exist
   addKernel(detail::Kernel::ReductionKind, reinterpret_cast<void *>(kernel), "reduction");
   state().kernels.back().reduceOp = int(op);
@@ -78,7 +78,7 @@ void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::strin
 
 Particle &create_particle(double density, double mass, double smoothingLength,
                           const ParticleVec &pos, const ParticleVec &vel,
-                          std::source_location loc) {
+                          CallSite loc) {
   auto &s = state();
   if (!s.inInitKernel)
     usageError(loc, "create_particle can only be called from an init kernel");

@@ -15,7 +15,7 @@ namespace {
 /// Stops the run if `store` is a force kernel's snapshot of the neighbours:
 /// the translator rejects such a write (NeighbourWrite) with this message.
 void checkWritable(const ParticleStore *store, const char *setter,
-                   const std::source_location &loc) {
+                   const CallSite &loc) {
   if (store->neighbours)
     detail::usageError(loc, std::string("'") + setter +
                                 "' writes to a neighbour particle; neighbours are read-only");

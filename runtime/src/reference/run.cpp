@@ -136,7 +136,7 @@ void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
 
 // Unlike generated programs' (where the translator checks it), this one
 // checks that it is called from a void kernel.
-void stop(std::source_location loc) {
+void stop(CallSite loc) {
   if (!state().inVoidKernel)
     detail::usageError(loc, "wash::stop() can only be called from a void kernel");
   runSettings().stopRequested = true;

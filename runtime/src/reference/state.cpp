@@ -20,7 +20,7 @@ State &state() {
   return s;
 }
 
-void usageError(const std::source_location &loc, const std::string &message) {
+void usageError(const CallSite &loc, const std::string &message) {
   usageErrorAt(loc, message);
 }
 
@@ -31,7 +31,7 @@ double State::store(double v) const {
   return runSettings().useFloat.value_or(false) ? double(float(v)) : v;
 }
 
-const Force &State::force(const std::string &name, bool isVector, const std::source_location &loc) {
+const Force &State::force(const std::string &name, bool isVector, const CallSite &loc) {
   for (const Force &f : forces) {
     if (f.name != name)
       continue;

@@ -13,7 +13,7 @@
 #include <wash/wash.hpp>
 
 #include <cstdint>
-#include <source_location>
+#include <wash/call_site.hpp>
 #include <string>
 #include <vector>
 
@@ -65,7 +65,7 @@ struct State {
   }
 
   /// The force `name` as a scalar or vector, created on first use.
-  const Force &force(const std::string &name, bool isVector, const std::source_location &loc);
+  const Force &force(const std::string &name, bool isVector, const CallSite &loc);
   /// Columns in output order: pos, vel, density, mass, smoothing_length, then
   /// forces registered with add_force in that order, then created ones by name.
   Frame frame(const ParticleStore &store) const;
@@ -74,6 +74,6 @@ struct State {
 State &state();
 
 /// A misuse of the API, reported at the caller's source location.
-[[noreturn]] void usageError(const std::source_location &loc, const std::string &message);
+[[noreturn]] void usageError(const CallSite &loc, const std::string &message);
 
 } // namespace wash::detail

@@ -65,7 +65,7 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
     Callees.push_back(calleeName(FD));
 
   // The user's code keeps its own file name and line numbers (#line), so
-  // compiler messages and source_location point at the simulation source.
+  // compiler messages and CallSite locations point at the simulation source.
   std::string Source =
       generatedBanner(Plan) + "#line 1 \"" + absolute(Opts.Source) + "\"\n" + *Body;
   size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <map>
-#include <source_location>
+#include <wash/call_site.hpp>
 #include <string>
 
 namespace wash::detail {
@@ -11,6 +11,6 @@ namespace wash::detail {
 std::map<std::string, double> &variables();
 
 /// `file:line:col: error: message` as a UsageError.
-[[noreturn]] void usageErrorAt(const std::source_location &loc, const std::string &message);
+[[noreturn]] void usageErrorAt(const CallSite &loc, const std::string &message);
 
 } // namespace wash::detail

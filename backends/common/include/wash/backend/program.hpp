@@ -19,10 +19,10 @@
 #include <wash/settings.hpp>
 #include <wash/vec.hpp>
 
-#include <source_location>
+#include <wash/call_site.hpp>
 
 namespace wash {
 /// Ends the run after this iteration (wash.hpp). The translator allows it
 /// only in void kernels, which every MPI rank runs alike.
-void stop(std::source_location loc = std::source_location::current());
+void stop(CallSite loc = CallSite::current());
 } // namespace wash
