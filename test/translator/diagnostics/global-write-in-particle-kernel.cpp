@@ -39,6 +39,21 @@ void Force(wash::Particle &p, const std::vector<wash::Particle> &) {
   Gain = p.get_density();
 }
 
+double *Cursor = Total;
+void Aliases(wash::Particle &p, const std::vector<wash::Particle> &) {
+  double &sum = Total[1];
+  double *count = &Total[0];
+  double local = 0;
+  double &mine = local; // An alias of a local: fine.
+  mine += 1;
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: force kernel 'Aliases' writes 'Total'
+  sum += p.get_density();
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: force kernel 'Aliases' writes 'Total'
+  *count = 1;
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: force kernel 'Aliases' writes 'Cursor'
+  *Cursor = local;
+}
+
 double Height(const wash::Particle &p) {
   // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: warning: reduction kernel 'Height' writes 'Visited'
   Visited = 1;
@@ -56,8 +71,9 @@ int main(int argc, char **) {
   wash::add_init_kernel(&Init);
   wash::add_update_kernel(&Update);
   wash::add_force_kernel(&Force);
+  wash::add_force_kernel(&Aliases);
   wash::add_reduction_kernel(&Height, wash::Reduction::Max, "h");
   wash::start();
 }
-// CHECK-NOT: warning: {{.*}} writes '{{Scale|Spawned}}'
+// CHECK-NOT: warning: {{.*}} writes '{{Scale|Spawned|local}}'
 // CHECK-NOT: error:

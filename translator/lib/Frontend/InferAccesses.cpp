@@ -364,7 +364,8 @@ void KernelAnalyser::libraryCall(const CallExpr *CE) {
   }
 }
 
-/// The global or static variable E names, through members and subscripts.
+/// The global or static variable E names, through members, subscripts,
+/// dereferences and local references or pointers initialised to it.
 static const VarDecl *storageOf(const Expr *E) {
   for (unsigned Depth = 0; E && Depth < 64; ++Depth) {
     E = E->IgnoreParenImpCasts();
@@ -379,9 +380,23 @@ static const VarDecl *storageOf(const Expr *E) {
     } else if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(E);
                OC && OC->getOperator() == OO_Subscript) {
       E = OC->getArg(0); // v[i] of a global container.
+    } else if (const auto *U = dyn_cast<UnaryOperator>(E); U && U->getOpcode() == UO_Deref) {
+      E = U->getSubExpr(); // *q: a global pointer, or a local one set to &g.
     } else if (const auto *DRE = dyn_cast<DeclRefExpr>(E)) {
       const auto *VD = dyn_cast<VarDecl>(DRE->getDecl());
-      return VD && VD->hasGlobalStorage() ? VD : nullptr;
+      if (!VD || VD->hasGlobalStorage())
+        return VD;
+      // A local alias of a global: `double &r = g;`, `double *q = &g;`. Only
+      // its initialiser is followed, not later assignments to a pointer.
+      const Expr *Init = VD->getInit();
+      if (!Init || !(VD->getType()->isReferenceType() || VD->getType()->isPointerType()))
+        return nullptr;
+      E = Init->IgnoreParenImpCasts();
+      if (const auto *A = dyn_cast<UnaryOperator>(E); A && A->getOpcode() == UO_AddrOf)
+        E = A->getSubExpr();
+      else if (VD->getType()->isPointerType() && !E->getType()->isArrayType() &&
+               !E->getType()->isPointerType())
+        return nullptr;
     } else {
       return nullptr;
     }
