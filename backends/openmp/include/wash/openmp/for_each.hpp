@@ -2,6 +2,7 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/detail/exact_sum.hpp>
 
 #include <omp.h>
 
@@ -80,6 +81,24 @@ struct Loop {
   template <typename Body>
   static void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
     forEachParticleChecked(rows, backend::reportingNothing(body));
+  }
+
+  /// The exact sum of values[row] over `rows`: one sum per thread, merged.
+  /// Merging is exact, so the thread count and the split do not matter.
+  static detail::ExactSum sum(const std::vector<double> &values,
+                              const std::vector<backend::Index> &rows) {
+    const std::size_t n = rows.size();
+    detail::ExactSum total;
+#pragma omp parallel if (n >= 16384)
+    {
+      detail::ExactSum mine;
+#pragma omp for schedule(static) nowait
+      for (std::size_t k = 0; k < n; ++k)
+        mine.add(values[rows[k]]);
+#pragma omp critical(wash_exact_sum)
+      total.merge(mine);
+    }
+    return total;
   }
 };
 
