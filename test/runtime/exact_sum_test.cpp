@@ -87,9 +87,10 @@ bool sameBits(float a, float b) {
          std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
 }
 
-::testing::AssertionResult matches(const ExactSum &sum, const Case &c, const std::string &how) {
-  const double d = sum.round<double>();
-  const float f = sum.round<float>();
+template <typename Sum>
+::testing::AssertionResult matches(const Sum &sum, const Case &c, const std::string &how) {
+  const double d = sum.template round<double>();
+  const float f = sum.template round<float>();
   if (sameBits(d, c.asDouble) && sameBits(f, c.asFloat))
     return ::testing::AssertionSuccess();
   char text[200];
@@ -106,11 +107,38 @@ TEST(ExactSum, CasesAreThere) {
 
 TEST(ExactSum, MatchesTheExactSumRoundedOnce) {
   for (const Case &c : cases()) {
-    ExactSum sum;
-    for (const Repeated &r : c.runs)
+    ExactSum oneByOne, perRun;
+    for (const Repeated &r : c.runs) {
       for (std::uint64_t k = 0; k < r.copies; ++k)
-        sum.add(r.value);
-    EXPECT_TRUE(matches(sum, c, "in order"));
+        oneByOne.add(r.value);
+      perRun.addEach(r.copies, [&](std::size_t) { return r.value; });
+    }
+    EXPECT_TRUE(matches(oneByOne, c, "in order, add"));
+    EXPECT_TRUE(matches(perRun, c, "in order, addEach"));
+  }
+}
+
+TEST(ExactSum, CarriesSettledEveryFewAddsChangeNothing) {
+  // Normalising every 3 adds runs the carries (of negative limbs too) all
+  // the time; the big case is left to the test above.
+  using Often = wash::detail::BasicExactSum<3>;
+  for (const Case &c : cases()) {
+    if (c.size() > shuffledUpTo)
+      continue;
+    Often sum, each, merged;
+    const std::vector<double> values = c.values();
+    for (double v : values)
+      sum.add(v);
+    each.addEach(values.size(), [&](std::size_t k) { return values[k]; });
+    for (std::size_t start = 0; start < values.size(); start += 5) {
+      Often part;
+      for (std::size_t k = start; k < std::min(start + 5, values.size()); ++k)
+        part.add(values[k]);
+      merged.merge(part);
+    }
+    EXPECT_TRUE(matches(sum, c, "normalised every 3 adds"));
+    EXPECT_TRUE(matches(each, c, "normalised every 3 adds, addEach"));
+    EXPECT_TRUE(matches(merged, c, "normalised every 3 adds, merged in fives"));
   }
 }
 
@@ -122,10 +150,12 @@ TEST(ExactSum, AnyOrderGivesTheSameBits) {
     std::vector<double> values = c.values();
     for (int shuffle = 0; shuffle < 4; ++shuffle) {
       std::shuffle(values.begin(), values.end(), random);
-      ExactSum sum;
+      ExactSum sum, each;
       for (double v : values)
         sum.add(v);
+      each.addEach(values.size(), [&](std::size_t k) { return values[k]; });
       EXPECT_TRUE(matches(sum, c, "shuffle " + std::to_string(shuffle)));
+      EXPECT_TRUE(matches(each, c, "shuffle " + std::to_string(shuffle) + ", addEach"));
     }
   }
 }

@@ -21,7 +21,9 @@
 
 namespace wash::detail {
 
-class ExactSum {
+/// MaxPending: adds between normalisations (a test makes it small to
+/// exercise the carries; every runtime uses ExactSum).
+template <std::uint32_t MaxPending> class BasicExactSum {
 public:
   /// Digits: positions 0 (2^-1074) to 2097 (the top bit of DBL_MAX) take 66;
   /// two more hold the carries of up to 2^64 values and the sign.
@@ -32,38 +34,28 @@ public:
   using State = std::array<std::int64_t, stateSize>;
 
   void add(double v) {
-    const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
-    const int biased = int(bits >> 52) & 0x7ff;
-    std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
-    // Counters in memory are int64-sized and so might alias the limbs: they
-    // change only on the rare branches, pending_ (a register) counts the adds.
-    if (biased == 0x7ff) [[unlikely]] {
-      (mantissa ? nans_ : bits >> 63 ? minusInfs_ : plusInfs_) += 1;
-      ++normalised_;
-      return;
-    }
-    if (bits == negativeZeroBits) [[unlikely]]
-      ++negativeZeros_;
-    int position = 0; // of the mantissa's lowest bit, in units of 2^-1074
-    if (biased) {
-      mantissa |= std::uint64_t(1) << 52;
-      position = biased - 1;
-    }
-    const int shift = position & 31; // the mantissa << shift spans three digits
-    const std::uint64_t low = mantissa << shift, high = (mantissa >> 1) >> (63 - shift);
-    const std::int64_t minus = -std::int64_t(bits >> 63); // 0 or all ones
-    auto signed_ = [minus](std::uint64_t digit) { return (std::int64_t(digit) ^ minus) - minus; };
-    std::int64_t *limb = &limbs_[position >> 5];
-    limb[0] += signed_(low & digitMask);
-    limb[1] += signed_(low >> 32);
-    limb[2] += signed_(high);
+    addUncounted(v);
     if (++pending_ == maxPending)
       normalise();
   }
   void add(float v) { add(double(v)); } // exact: every float is a double
 
+  /// Adds value(k) for k = 0 .. count - 1, as add() would one by one (the
+  /// adds are counted per run of up to 2^30, not one by one).
+  template <typename Value> void addEach(std::size_t count, Value value) {
+    for (std::size_t start = 0; start < count;) {
+      const std::size_t end = start + std::min<std::size_t>(count - start, maxPending - pending_);
+      for (std::size_t k = start; k < end; ++k)
+        addUncounted(double(value(k)));
+      pending_ += std::uint32_t(end - start);
+      if (pending_ == maxPending)
+        normalise();
+      start = end;
+    }
+  }
+
   /// Adds another sum: the result is the exact sum of both sets of values.
-  void merge(const ExactSum &other) { merge(other.state()); }
+  void merge(const BasicExactSum &other) { merge(other.state()); }
   void merge(const State &other) {
     normalise();
     for (int i = 0; i < limbCount; ++i)
@@ -80,7 +72,7 @@ public:
   /// and the counts. States of any number of sums add limb by limb without
   /// overflow for fewer than 2^31 of them (an MPI_SUM of int64).
   State state() const {
-    ExactSum s = *this;
+    BasicExactSum s = *this;
     s.normalise();
     State out{};
     std::copy(s.limbs_.begin(), s.limbs_.end(), out.begin());
@@ -103,7 +95,7 @@ public:
       return std::numeric_limits<T>::quiet_NaN();
     if (plusInfs_ || minusInfs_)
       return plusInfs_ ? std::numeric_limits<T>::infinity() : -std::numeric_limits<T>::infinity();
-    ExactSum s = *this;
+    BasicExactSum s = *this;
     s.normalise();
     const bool negative = s.limbs_.back() < 0;
     if (negative) {
@@ -133,11 +125,44 @@ public:
   }
 
 private:
+  /// Adds v to the limbs (or counts it if it is NaN or infinite); the
+  /// caller counts it in pending_.
+  void addUncounted(double v) {
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
+    const int biased = int(bits >> 52) & 0x7ff;
+    std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
+    // Counters in memory are int64-sized and so might alias the limbs: they
+    // change only on the rare branches.
+    if (biased == 0x7ff) [[unlikely]] {
+      (mantissa ? nans_ : bits >> 63 ? minusInfs_ : plusInfs_) += 1;
+      return;
+    }
+    if (bits == negativeZeroBits) [[unlikely]]
+      ++negativeZeros_;
+    int position = 0; // of the mantissa's lowest bit, in units of 2^-1074
+    if (biased) {
+      mantissa |= std::uint64_t(1) << 52;
+      position = biased - 1;
+    }
+    const int shift = position & 31; // the mantissa << shift spans three digits
+    const std::uint64_t low = mantissa << shift, high = (mantissa >> 1) >> (63 - shift);
+    const std::int64_t minus = -std::int64_t(bits >> 63); // 0 or all ones
+    auto signed_ = [minus](std::uint64_t digit) { return (std::int64_t(digit) ^ minus) - minus; };
+    std::int64_t *limb = &limbs_[position >> 5];
+    // Top digit first: in order, g++ -O3 pairs the upper two into one
+    // 16-byte load and store, and an add a limb away then stalls on loading
+    // half of what that store wrote.
+    limb[2] += signed_(high);
+    limb[0] += signed_(low & digitMask);
+    limb[1] += signed_(low >> 32);
+  }
+
   static constexpr std::uint64_t digitMask = 0xffffffff;
   static constexpr std::uint64_t negativeZeroBits = std::uint64_t(1) << 63;
   /// A limb gains less than 2^32 in magnitude per add, so 2^30 adds after a
   /// normalise (limbs below 2^32) keep every limb below 2^63.
-  static constexpr std::uint32_t maxPending = std::uint32_t(1) << 30;
+  static_assert(MaxPending >= 1 && MaxPending <= std::uint32_t(1) << 30);
+  static constexpr std::uint32_t maxPending = MaxPending;
 
   /// Carries: every limb but the top one becomes a digit in [0, 2^32).
   void normalise() {
@@ -168,9 +193,11 @@ private:
   }
 
   std::array<std::int64_t, limbCount> limbs_{};
-  std::uint32_t pending_ = 0;    ///< finite values added since the last normalise
-  std::uint64_t normalised_ = 0; ///< the other values added
+  std::uint32_t pending_ = 0;    ///< values added since the last normalise
+  std::uint64_t normalised_ = 0; ///< values added before it
   std::uint64_t negativeZeros_ = 0, nans_ = 0, plusInfs_ = 0, minusInfs_ = 0;
 };
+
+using ExactSum = BasicExactSum<std::uint32_t(1) << 30>;
 
 } // namespace wash::detail

@@ -12,8 +12,7 @@ namespace wash::backend {
 /// The exact sum of values[p] over the positions p in `rows`, on one thread.
 inline detail::ExactSum sumRows(const std::vector<double> &values, const std::vector<Index> &rows) {
   detail::ExactSum sum;
-  for (Index p : rows)
-    sum.add(values[p]);
+  sum.addEach(rows.size(), [&](std::size_t k) { return values[rows[k]]; });
   return sum;
 }
 

@@ -91,10 +91,11 @@ struct Loop {
     detail::ExactSum total;
 #pragma omp parallel if (n >= 16384)
     {
+      const std::size_t threads = std::size_t(omp_get_num_threads());
+      const std::size_t t = std::size_t(omp_get_thread_num());
+      const std::size_t begin = n * t / threads, end = n * (t + 1) / threads;
       detail::ExactSum mine;
-#pragma omp for schedule(static) nowait
-      for (std::size_t k = 0; k < n; ++k)
-        mine.add(values[rows[k]]);
+      mine.addEach(end - begin, [&](std::size_t k) { return values[rows[begin + k]]; });
 #pragma omp critical(wash_exact_sum)
       total.merge(mine);
     }
