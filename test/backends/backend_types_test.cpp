@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <omp.h>
 #include <string>
 
 namespace runtime_names {
@@ -62,6 +63,27 @@ template <typename Backend> void searchesAndLoops() {
   EXPECT_EQ(backend.reduce(P.id, values, wash::detail::ReduceOp::Max), 9.0);
   EXPECT_EQ(Backend::combineMax(2.5), 2.5); // one process: its own maximum
   EXPECT_TRUE(backend.writes());
+}
+
+TEST(BackendTypes, OpenMPSumsAreExactAtEveryThreadCount) {
+  // Values whose sum in any order loses bits: every thread count, and the
+  // serial loop, must give the reference's exact sum, bit for bit.
+  std::vector<double> values;
+  std::vector<Index> rows;
+  for (Index k = 0; k < 100000; ++k) {
+    values.push_back(k % 3 == 0 ? 1e300 * (k % 2 ? -1 : 1) : // +-1e300s cancel
+                         std::ldexp(1.0 + k, -40 - int(k % 50)));
+    rows.push_back(k);
+  }
+  const double expected = wash::detail::reduceInIdOrder(values, wash::detail::ReduceOp::Sum);
+  EXPECT_NE(expected, 0.0);
+  EXPECT_EQ(wash::serial::Loop::sum(values, rows).round<double>(), expected);
+  const int most = omp_get_max_threads();
+  for (int threads : {1, 2, 3, 4, 7}) {
+    omp_set_num_threads(threads);
+    EXPECT_EQ(wash::openmp::Loop::sum(values, rows).round<double>(), expected) << threads;
+  }
+  omp_set_num_threads(most);
 }
 
 TEST(BackendTypes, SerialSearchesLoopsAndReduces) { searchesAndLoops<wash::serial::Backend<2>>(); }

@@ -33,6 +33,14 @@ TEST(MpiBackend, EveryRankKeepsAShareAndReducesOverAll) {
   std::vector<double> values(P.size(), 0.0);
   backend.forEachParticle([&](Index i) { values[i] = double(P.id[i]); });
   EXPECT_EQ(backend.reduce(P.id, values, wash::detail::ReduceOp::Sum), 780.0); // 0 + ... + 39
+  // Exact: 1e16, then 38 ones, then -1e16 is 38 (added in id order it was 0),
+  // and each rank sends one fixed-size state for it, whatever it holds.
+  backend.forEachParticle([&](Index i) {
+    values[i] = P.id[i] == 0 ? 1e16 : P.id[i] == 39 ? -1e16 : 1.0;
+  });
+  const std::uint64_t sent = wash::mpi::traffic().sums;
+  EXPECT_EQ(backend.reduce(P.id, values, wash::detail::ReduceOp::Sum), 38.0);
+  EXPECT_EQ(wash::mpi::traffic().sums - sent, sizeof(wash::detail::ExactSum::State));
   EXPECT_EQ(wash::mpi::Backend<2>::combineMax(double(wash::mpi::rank())),
             double(wash::mpi::ranks() - 1));
   // Rank 0 gets every rank's particles; the others an empty frame.

@@ -21,8 +21,8 @@
 // Every step (iteration) ends with one line on stdout,
 //   step=S time=T energy=E kinetic=K momentum_x=PX momentum_y=PY
 // for the state at the end of the runtime's step S (numbered as in its error
-// messages), from Sum reductions, which add in id order, so every backend
-// prints the same bits (%.17g). Step 1 only evaluates the forces of the
+// messages), from Sum reductions, which are exact and rounded once, so every
+// backend prints the same bits (%.17g). Step 1 only evaluates the forces of the
 // initial state (dt = 0), so its line is the initial state, time 0: a run of
 // N steps advances N - 1 time steps, to time (N - 1) dt.
 //

@@ -7,7 +7,7 @@
 bin=$1 steps=$2 reference_steps=$3
 
 # Bounds, as fractions of the initial total energy E0 (drift.awk defines the
-# measures). Measured at 3001 steps: 1.40e-5, 2.5e-7, 4.2e-8, 4.7e-16; the
+# measures). Measured at 3001 steps: 1.40e-5, 2.5e-7, 4.2e-8, 6.9e-17; the
 # energy error is the leapfrog's, made while the initial flow steepens into
 # shocks, and shrinks about 8-fold each time dt is halved (docs/validation.md).
 max_energy_drift=5e-5       # |E(s) - E0| / E0, any step

@@ -94,26 +94,22 @@ double allreduceSum(double v) { return reduce(v, MPI_SUM); }
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &l) { return gatherAll(l); }
 std::vector<double> allgatherv(const std::vector<double> &l) { return gatherAll(l); }
 
-double reduceById(const std::vector<std::uint64_t> &ids, const std::vector<double> &values,
-                  const std::vector<std::uint32_t> &rows, detail::ReduceOp op) {
-  if (op != detail::ReduceOp::Sum) { // order does not matter for min and max
-    std::vector<double> mine;
-    for (std::uint32_t p : rows)
-      mine.push_back(values[p]);
-    return reduce(detail::reduceInIdOrder(mine, op),
-                  op == detail::ReduceOp::Min ? MPI_MIN : MPI_MAX);
-  }
-  std::vector<std::uint64_t> myIds;
-  std::vector<double> myValues;
-  for (std::uint32_t p : rows) {
-    myIds.push_back(ids[p]);
-    myValues.push_back(values[p]);
-  }
-  std::vector<std::uint64_t> allIds = allgatherv(myIds);
-  std::vector<double> allValues = allgatherv(myValues), byId(allIds.size());
-  for (std::size_t k = 0; k < allIds.size(); ++k)
-    byId[allIds[k]] = allValues[k];
-  return detail::reduceInIdOrder(byId, op);
+detail::ExactSum allreduceSum(const detail::ExactSum &local) {
+  const detail::ExactSum::State mine = local.state();
+  detail::ExactSum::State all{};
+  MPI_Allreduce(mine.data(), all.data(), int(all.size()), MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+  traffic().sums += sizeof mine;
+  detail::ExactSum total;
+  total.merge(all);
+  return total;
+}
+
+double allreduceMinMax(const std::vector<double> &values, const std::vector<std::uint32_t> &rows,
+                       detail::ReduceOp op) {
+  std::vector<double> mine; // order does not matter for min and max
+  for (std::uint32_t p : rows)
+    mine.push_back(values[p]);
+  return reduce(detail::reduceInIdOrder(mine, op), op == detail::ReduceOp::Min ? MPI_MIN : MPI_MAX);
 }
 
 detail::Frame gatherFrame(const detail::Frame &local) {

@@ -86,9 +86,9 @@ using ForceKernel = void (*)(Particle &, const std::vector<Particle> &);
 using VoidKernel = void (*)();
 using ReductionKernel = double (*)(const Particle &);
 
-/// How a reduction kernel combines its particles' values. Sum adds them in
-/// ascending id order starting from 0 (so every backend gets the same bits);
-/// Min and Max of no particles are +inf and -inf.
+/// How a reduction kernel combines its particles' values. Sum is their exact
+/// sum rounded once to nearest (so every backend gets the same bits, in any
+/// order; docs/semantics.md); Min and Max of no particles are +inf and -inf.
 enum class Reduction { Sum, Min, Max };
 
 /// Registers a named property: dim 1 is a scalar, dim == WASH_DIM a vector.

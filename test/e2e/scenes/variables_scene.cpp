@@ -1,7 +1,7 @@
 // Global variables, void kernels and reduction kernels: a void kernel damps a
-// global "speed" by the total crowding (a Sum reduction, which must add in id
-// order to agree bit for bit) and counts iterations; particles drift by it and
-// a force kernel reads it, in a box periodic in x.
+// global "speed" by the total crowding (a Sum reduction: exact, so it agrees
+// bit for bit on every backend, thread and rank count) and counts iterations;
+// particles drift by it and a force kernel reads it, in a box periodic in x.
 #include <wash/wash.hpp>
 
 #include <vector>

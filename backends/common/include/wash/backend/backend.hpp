@@ -87,7 +87,8 @@ concept ParticleBackend =
       {
         cb.forEachParticleChecked([](Index) { return true; })
       } -> std::same_as<bool>;
-      /// A reduction of values[row] over every real particle, in id order.
+      /// A reduction of values[row] over every real particle: a Sum exact and
+      /// rounded once (detail::ExactSum), Min and Max (docs/semantics.md).
       { cb.reduce(P.id, values, detail::ReduceOp::Sum) } -> std::same_as<double>;
       /// Combines this process's largest search radius with the others'.
       { B::combineMax(1.0) } -> std::same_as<double>;

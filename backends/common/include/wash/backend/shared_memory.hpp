@@ -57,8 +57,11 @@ public:
 
   template <typename Fields> void refresh(Fields fields) { refreshImages(images_, fields); }
 
+  /// A Sum is exact (the loop's per-thread sums, merged); Min and Max go by id.
   double reduce(const Column<std::uint64_t> &ids, const std::vector<double> &values,
                 detail::ReduceOp op) const {
+    if (op == detail::ReduceOp::Sum)
+      return Loop::sum(values, images_.owned).template round<double>();
     return reduceById(ids, values, images_.owned, op);
   }
   static double combineMax(double v) { return v; }

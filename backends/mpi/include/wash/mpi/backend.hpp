@@ -56,9 +56,13 @@ public:
   /// Local images, then the halo copies of the columns `fields` visits.
   template <typename Fields> void refresh(Fields fields) { exchange(halo_, fields); }
 
-  double reduce(const backend::Column<std::uint64_t> &ids, const std::vector<double> &values,
+  /// Collective. A Sum adds every rank's exact sum (a fixed-size
+  /// MPI_Allreduce, whatever the particle count); Min and Max reduce locally.
+  double reduce(const backend::Column<std::uint64_t> &, const std::vector<double> &values,
                 ::wash::detail::ReduceOp op) const {
-    return reduceById(ids, values, halo_.owned, op);
+    if (op == ::wash::detail::ReduceOp::Sum)
+      return allreduceSum(Loop::sum(values, halo_.owned)).round<double>();
+    return allreduceMinMax(values, halo_.owned, op);
   }
   static double combineMax(double v) { return allreduceMax(v); }
   /// Collective: every rank's particles, on rank 0.
@@ -69,9 +73,11 @@ public:
     const std::uint64_t steps = run.steps() ? run.steps() : 1;
     const std::uint64_t haloBytes = allreduceSum(traffic().halo);
     const std::uint64_t moveBytes = allreduceSum(traffic().migration);
+    const std::uint64_t sumBytes = allreduceSum(traffic().sums);
     run.report("wash mpi: " + std::to_string(ranks()) + " ranks; halo exchange " +
                std::to_string(haloBytes / steps) + " bytes/step, particle migration " +
-               std::to_string(moveBytes / steps) + " bytes/step (all ranks)");
+               std::to_string(moveBytes / steps) + " bytes/step, sum reductions " +
+               std::to_string(sumBytes / steps) + " bytes/step (all ranks)");
   }
 
 private:

@@ -1,6 +1,7 @@
 //===- wash/mpi/comm.hpp - the few MPI operations the MPI backend uses -*- C++ -*-===//
 #pragma once
 
+#include <wash/detail/exact_sum.hpp>
 #include <wash/detail/frame.hpp>
 #include <wash/detail/reduction.hpp>
 
@@ -14,7 +15,7 @@ int ranks();
 
 /// Bytes sent to other ranks so far, by purpose (for the end-of-run report).
 struct Traffic {
-  std::uint64_t halo = 0, migration = 0;
+  std::uint64_t halo = 0, migration = 0, sums = 0;
 };
 Traffic &traffic();
 
@@ -34,11 +35,12 @@ double allreduceSum(double v);
 std::vector<std::uint64_t> allgatherv(const std::vector<std::uint64_t> &local);
 std::vector<double> allgatherv(const std::vector<double> &local);
 
-/// A reduction kernel's result over all ranks: values[p] for this rank's
-/// particles at positions `rows`, combined in ascending id order (Sum gathers
-/// every value; Min and Max reduce locally first).
-double reduceById(const std::vector<std::uint64_t> &ids, const std::vector<double> &values,
-                  const std::vector<std::uint32_t> &rows, detail::ReduceOp op);
+/// The exact sum of every rank's `local`: one MPI_Allreduce of their states
+/// (ExactSum::State, integers that add), the same bytes however many values.
+detail::ExactSum allreduceSum(const detail::ExactSum &local);
+/// The Min or Max over all ranks of values[p] at this rank's positions `rows`.
+double allreduceMinMax(const std::vector<double> &values, const std::vector<std::uint32_t> &rows,
+                       detail::ReduceOp op);
 
 /// The frames of all ranks, concatenated, on rank 0 (others get an empty frame).
 detail::Frame gatherFrame(const detail::Frame &local);

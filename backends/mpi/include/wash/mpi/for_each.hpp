@@ -42,6 +42,11 @@ struct Loop {
     BusyClock clock;
     return wash::openmp::Loop::forEachParticleChecked(rows, body);
   }
+  /// This rank's exact sum of values[row] over `rows`, on all its threads.
+  static detail::ExactSum sum(const std::vector<double> &values,
+                              const std::vector<backend::Index> &rows) {
+    return wash::openmp::Loop::sum(values, rows);
+  }
 };
 
 } // namespace wash::mpi

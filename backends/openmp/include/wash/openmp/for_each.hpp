@@ -2,6 +2,7 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/detail/exact_sum.hpp>
 
 #include <omp.h>
 
@@ -80,6 +81,25 @@ struct Loop {
   template <typename Body>
   static void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
     forEachParticleChecked(rows, backend::reportingNothing(body));
+  }
+
+  /// The exact sum of values[row] over `rows`: one sum per thread, merged.
+  /// Merging is exact, so the thread count and the split do not matter.
+  static detail::ExactSum sum(const std::vector<double> &values,
+                              const std::vector<backend::Index> &rows) {
+    const std::size_t n = rows.size();
+    detail::ExactSum total;
+#pragma omp parallel if (n >= 16384)
+    {
+      const std::size_t threads = std::size_t(omp_get_num_threads());
+      const std::size_t t = std::size_t(omp_get_thread_num());
+      const std::size_t begin = n * t / threads, end = n * (t + 1) / threads;
+      detail::ExactSum mine;
+      mine.addEach(end - begin, [&](std::size_t k) { return values[rows[begin + k]]; });
+#pragma omp critical(wash_exact_sum)
+      total.merge(mine);
+    }
+    return total;
   }
 };
 

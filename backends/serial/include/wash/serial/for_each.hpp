@@ -2,6 +2,7 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/backend/reduce.hpp>
 
 #include <vector>
 
@@ -26,6 +27,12 @@ struct Loop {
   template <typename Body>
   static void forEachParticle(const std::vector<backend::Index> &rows, Body body) {
     forEachParticleChecked(rows, backend::reportingNothing(body));
+  }
+
+  /// The exact sum of values[row] over `rows`.
+  static detail::ExactSum sum(const std::vector<double> &values,
+                              const std::vector<backend::Index> &rows) {
+    return backend::sumRows(values, rows);
   }
 };
 
