@@ -41,6 +41,22 @@ std::string memberFor(const std::string &Name, unsigned Index, const std::set<st
 
 } // namespace
 
+std::string CodePlan::variableSlot(const std::string &Name) {
+  bool Plain = !Name.empty() && std::all_of(Name.begin(), Name.end(), [](char C) {
+    return std::isalnum((unsigned char)C) || C == '_';
+  });
+  if (Plain)
+    return "var_" + Name;
+  // Any other name, byte by byte in hex: no `var_`, so no clash with the above.
+  std::string Slot = "var";
+  for (char C : Name) {
+    const char *Hex = "0123456789abcdef";
+    Slot += Hex[(unsigned char)C >> 4];
+    Slot += Hex[(unsigned char)C & 15];
+  }
+  return Slot;
+}
+
 std::string CodePlan::sourceName() const { return Stem + "." + backendName(Target) + ".cpp"; }
 
 std::string CodePlan::storedType(const Field &F) const {

@@ -125,8 +125,7 @@ std::string fieldList(const std::vector<std::string> &Fields) {
   return L;
 }
 
-/// S as a C++ string literal: a variable name may hold any character.
-static std::string stringLiteral(const std::string &S) {
+std::string stringLiteral(const std::string &S) {
   std::string L = "\"";
   for (char C : S) {
     if (C == '"' || C == '\\')

@@ -68,6 +68,12 @@ void emitStart(std::ostream &OS, const Model &M, const CodePlan &Plan,
   OS << "void start() {\n"
      << "  const " << translationText(Plan) << "  " << rt::Run
      << " run(translated, backend.writes());\n";
+  if (!Plan.Variables.empty()) {
+    OS << "  " << rt::BindVariables << "({";
+    for (size_t V = 0; V < Plan.Variables.size(); ++V)
+      OS << (V ? ", &" : "&") << CodePlan::variableSlot(Plan.Variables[V]);
+    OS << "});\n";
+  }
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init)
       OS << "  " << Callees[K] << "(); // init kernel\n";

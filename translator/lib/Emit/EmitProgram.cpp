@@ -54,7 +54,7 @@ std::string absolute(const std::string &Path) {
 bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
                  const Options &Opts, std::vector<GeneratedFile> &Files) {
   CodePlan Plan = planCode(M, Opts.Target, llvm::sys::path::stem(Opts.Source).str());
-  std::optional<std::string> Body = rewriteSource(Ctx, Plan, D);
+  std::optional<std::string> Body = rewriteSource(Ctx, Plan, D, &Plan.Variables);
   if (!Body)
     return false;
   if (Body->empty() || Body->back() != '\n')

@@ -1,5 +1,6 @@
 //===- EmitStorage.cpp - the storage header every backend's program includes -===//
 #include "wash/translator/Emit/EmitStorage.h"
+#include "wash/translator/Emit/DriverParts.h"
 #include "wash/translator/Emit/RuntimeNames.h"
 
 #include <sstream>
@@ -99,6 +100,14 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
        << "[p]); }\n"
        << "inline " << Api << " get_" << Col << "(NeighbourRef p) { return " << Api << "(" << Col
        << "_neighbour[p]); }\n";
+  }
+  if (!Plan.Variables.empty()) {
+    OS << "\n// The global variables the simulation reads: get_variable(\"x\") reads\n"
+       << "// var_x, bound to the runtime's value of x when start() begins\n"
+       << "// (wash/backend/variables.hpp).\n";
+    for (const std::string &V : Plan.Variables)
+      OS << "inline " << rt::VariableSlot << " " << CodePlan::variableSlot(V) << "{"
+         << stringLiteral(V) << ", " << V.size() << "};\n";
   }
   OS << "\nSelf &create_particle(double density, double mass, double smoothing_length,\n"
      << "                      const wash::ParticleVec &pos, const wash::ParticleVec &vel);\n"

@@ -188,10 +188,32 @@ public:
     case CallLowering::Generated:
       return replace(E->getCallee()->getSourceRange(), std::string("wash_gen::") + Call->Name);
     case CallLowering::Keep:
+      if (Call->Id == ApiCall::get_variable)
+        lowerVariableRead(E);
       return true;
     }
     return true;
   }
+
+  /// `get_variable("dt")` becomes `get_variable(wash_gen::var_dt)`, a read
+  /// without a lookup (wash/backend/variables.hpp). The callee and the
+  /// parenthesis stay where they were, so the location the call reports an
+  /// error at does too. Names known only at run time keep the lookup.
+  void lowerVariableRead(const CallExpr *E) {
+    if (E->getNumArgs() == 0 || E->getBeginLoc().isMacroID())
+      return;
+    const Expr *Arg = E->getArg(0);
+    std::optional<std::string> Name = evaluateString(Arg, Ctx);
+    SourceRange Range = Arg->getSourceRange();
+    if (!Name || Range.getBegin().isMacroID() || Range.getEnd().isMacroID())
+      return;
+    if (std::find(Variables.begin(), Variables.end(), *Name) == Variables.end())
+      Variables.push_back(*Name);
+    replace(Range, "wash_gen::" + CodePlan::variableSlot(*Name));
+  }
+
+  /// The variables lowerVariableRead gave slots, in order of first use.
+  std::vector<std::string> Variables;
 
   /// The `#include <wash/wash.hpp>` line becomes the generated header's.
   void replaceApiInclude() {
@@ -308,13 +330,16 @@ private:
 
 } // namespace
 
-std::optional<std::string> rewriteSource(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D) {
+std::optional<std::string> rewriteSource(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D,
+                                         std::vector<std::string> *Variables) {
   Edits R(Ctx.getSourceManager(), Ctx.getLangOpts());
   Lowering L(Ctx, Plan, D, R);
   L.TraverseDecl(Ctx.getTranslationUnitDecl());
   L.replaceApiInclude();
   if (D.hasErrors())
     return std::nullopt;
+  if (Variables)
+    *Variables = L.Variables;
   return R.result();
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <wash/backend/cell_grid.hpp>
+#include <wash/backend/id_order.hpp>
 #include <wash/backend/scan_avx2.hpp>
 #include <wash/backend/scan_buffers.hpp>
 
@@ -67,16 +68,7 @@ public:
              const Column<std::uint64_t> &ids, double radius) {
     static_assert(!Distances, "the smoothing-length rule reorders the list: no distances");
     scan(grid, pos, self, radius);
-    const std::size_t kept = size();
-    std::vector<std::uint64_t> &keys = threadKeys();
-    if (keys.size() < kept)
-      keys.resize(kept);
-    for (std::size_t k = 0; k < kept; ++k) // ids and rows below 2^32: the order is the id's
-      keys[k] = ids[begin_[k].index] << 32 | begin_[k].index;
-    std::sort(keys.begin(), keys.begin() + std::ptrdiff_t(kept));
-    Ref *out = threadBuffers().rows();
-    for (std::size_t k = 0; k < kept; ++k)
-      out[k].index = Index(keys[k] & 0xffffffffu);
+    orderById(threadBuffers().rows(), size(), ids);
   }
 
   /// A list kept elsewhere (NeighbourTable).
@@ -195,10 +187,27 @@ private:
   }
 #endif
 
+  /// Puts the n rows at `rows`, as the scan left them (ascending), in
+  /// ascending (id, row) order: the order of the `id << 32 | row` keys, which
+  /// sortByIdRadix gives as it keeps the rows' order among equal ids. Not
+  /// inlined, so that profiles show what it costs.
+  [[gnu::noinline]] static void orderById(Ref *rows, std::size_t n,
+                                          const Column<std::uint64_t> &ids) {
+    std::vector<std::uint64_t> &keys = threadKeys();
+    if (keys.size() < 2 * n)
+      keys.resize(2 * n);
+    for (std::size_t k = 0; k < n; ++k) // ids and rows below 2^32
+      keys[k] = ids[rows[k].index] << 32 | rows[k].index;
+    const std::uint64_t *sorted = sortByIdRadix(keys.data(), keys.data() + n, n);
+    for (std::size_t k = 0; k < n; ++k)
+      rows[k].index = Index(sorted[k] & 0xffffffffu);
+  }
+
   static ScanBuffers<Ref> &threadBuffers() {
     thread_local ScanBuffers<Ref> buffers;
     return buffers;
   }
+  /// Keys, and the radix passes' scratch space.
   static std::vector<std::uint64_t> &threadKeys() {
     thread_local std::vector<std::uint64_t> keys;
     return keys;

@@ -15,6 +15,7 @@
 #include <wash/backend/reduce.hpp>
 #include <wash/backend/run.hpp>
 #include <wash/backend/search_geometry.hpp>
+#include <wash/backend/variables.hpp>
 #include <wash/math.hpp>
 #include <wash/settings.hpp>
 #include <wash/vec.hpp>

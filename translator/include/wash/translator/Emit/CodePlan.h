@@ -48,6 +48,12 @@ struct CodePlan {
     return false;
   }
 
+  /// The names of the global variables whose `get_variable(name)` the rewrite
+  /// lowered to a slot, in order of first use (filled by rewriteSource).
+  std::vector<std::string> Variables;
+  /// The slot generated code reads variable Name through (in wash_gen).
+  static std::string variableSlot(const std::string &Name);
+
   std::string headerName() const { return Stem + ".wash.hpp"; }
   std::string sourceName() const;
 

@@ -16,6 +16,9 @@
 
 namespace wash::tr {
 
+/// S as a C++ string literal: a variable name may hold any character.
+std::string stringLiteral(const std::string &S);
+
 /// `Translation translated{...};`: what the program was translated for, every
 /// member named.
 std::string translationText(const CodePlan &Plan);

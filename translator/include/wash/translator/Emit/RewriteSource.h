@@ -7,6 +7,7 @@
 //  - `wash::Particle&` becomes `wash_gen::Self&`, a `const wash::Particle&` or
 //    a copy `auto` (a self or a neighbour handle), and
 //    `std::vector<wash::Particle>` the backend's neighbour range;
+//  - `get_variable("x")` reads the slot `wash_gen::var_x`, not a map;
 //  - registration calls become `(void)0`, `wash::start()` the generated
 //    driver, `wash::create_particle` the generated one, and the
 //    `#include <wash/wash.hpp>` the generated storage header.
@@ -21,11 +22,14 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace wash::tr {
 
 /// The rewritten main file, or nothing after an error (reported through D).
-std::optional<std::string> rewriteSource(clang::ASTContext &Ctx, const CodePlan &Plan,
-                                         Diagnoser &D);
+/// `Variables` gets the names of the variables whose reads were given slots
+/// (CodePlan::Variables).
+std::optional<std::string> rewriteSource(clang::ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D,
+                                         std::vector<std::string> *Variables = nullptr);
 
 } // namespace wash::tr
