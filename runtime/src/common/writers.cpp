@@ -74,13 +74,21 @@ void writeCsv(const Frame &frame, std::ostream &out) {
   }
 }
 
-void writeVtp(const Frame &frame, std::ostream &out) {
+void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time) {
   const std::size_t n = frame.size();
   const Column &pos = frame.columns.at(0);
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <PolyData>\n"
-      << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\">\n"
+      << "  <PolyData>\n";
+  if (time) {
+    Text buf;
+    out << "    <FieldData>\n"
+        << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+           "format=\"ascii\">"
+        << exact(*time, buf) << "</DataArray>\n"
+        << "    </FieldData>\n";
+  }
+  out << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\">\n"
       << "      <Points>\n";
   std::vector<double> points(3 * n, 0.0);
   for (std::size_t p = 0; p < n; ++p)

@@ -151,8 +151,10 @@ void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee)
      << "        Self self{i};\n"
      << "        values[i] = " << Callee << "(self);\n"
      << "      });\n"
-     << "      " << rt::SetVariable << "(" << stringLiteral(K.Variable)
-     << ", backend.reduce(P.id, values, " << rt::ReduceOp << "::" << Op << "));\n"
+     << "      "
+     << (K.Variable == TimeStepTarget ? rt::SetReducedTimeStep + "("
+                                      : rt::SetVariable + "(" + stringLiteral(K.Variable) + ", ")
+     << "backend.reduce(P.id, values, " << rt::ReduceOp << "::" << Op << "));\n"
      << "    }\n";
 }
 

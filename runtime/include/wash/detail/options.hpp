@@ -24,6 +24,8 @@ struct RunOptions {
   std::string dumpPath; ///< empty: no dump
   bool quiet = false;
   bool help = false;
+  std::optional<double> endTime;  ///< stop after the iteration that reaches it
+  std::optional<double> outputDt; ///< a frame whenever the time crosses a multiple
 };
 
 struct ParsedArgs {

@@ -3,6 +3,7 @@
 
 #include <wash/detail/frame.hpp>
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -15,8 +16,9 @@ namespace wash::detail {
 void writeCsv(const Frame &frame, std::ostream &out);
 
 /// A VTK XML PolyData (.vtp) file: points from "pos" (z = 0 in 2D), one vertex
-/// cell per particle and every other column (and id) as point data.
-void writeVtp(const Frame &frame, std::ostream &out);
+/// cell per particle and every other column (and id) as point data; with a
+/// time, a field-data TimeValue (ParaView and VTK's readers show it as the time).
+void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time = std::nullopt);
 
 /// A ParaView collection (.pvd) listing (time, file) pairs.
 void writePvd(const std::vector<std::pair<double, std::string>> &datasets, std::ostream &out);
