@@ -29,6 +29,22 @@ double parseTime(const std::string &option, const std::string &text, bool positi
   return value;
 }
 
+std::vector<std::string> parseFields(const std::string &text) {
+  std::vector<std::string> fields;
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', from);
+    std::string name = text.substr(from, comma == std::string::npos ? comma : comma - from);
+    if (name.empty())
+      throw OptionError("option '--fields' expects field names separated by commas, got '" + text +
+                        "'");
+    fields.push_back(name);
+    if (comma == std::string::npos)
+      return fields;
+    from = comma + 1;
+  }
+}
+
 OutputFormat parseFormat(const std::string &text) {
   if (text == "vtk")
     return OutputFormat::Vtk;
@@ -38,9 +54,9 @@ OutputFormat parseFormat(const std::string &text) {
 }
 
 bool takesValue(const std::string &name) {
-  return name == "--steps" || name == "--out" || name == "--output-every" ||
-         name == "--format" || name == "--dump" || name == "--end-time" ||
-         name == "--output-dt";
+  return name == "--steps" || name == "--out" || name == "--output-every" || name == "--format" ||
+         name == "--dump" || name == "--end-time" || name == "--output-dt" ||
+         name == "--vtk-encoding" || name == "--fields";
 }
 
 void apply(RunOptions &o, const std::string &name, const std::string &value) {
@@ -58,6 +74,12 @@ void apply(RunOptions &o, const std::string &name, const std::string &value) {
     o.endTime = parseTime(name, value, /*positive=*/false);
   else if (name == "--output-dt")
     o.outputDt = parseTime(name, value, /*positive=*/true);
+  else if (name == "--vtk-encoding") {
+    if (value != "binary" && value != "ascii")
+      throw OptionError("option '--vtk-encoding' expects 'binary' or 'ascii', got '" + value + "'");
+    o.vtkAscii = value == "ascii";
+  } else if (name == "--fields")
+    o.fields = parseFields(value);
   if (value.empty() && (name == "--out" || name == "--dump"))
     throw OptionError("option '" + name + "' expects a path");
 }
@@ -117,6 +139,10 @@ std::string usageText(const std::string &program) {
          "                     reaches T (overrides wash::set_end_time)\n"
          "  --output-dt T      also write a frame whenever the simulated time crosses a\n"
          "                     multiple of T (frame 0 and the last step too)\n"
+         "  --fields A,B,...   frames hold id, pos and these fields only (default: all,\n"
+         "                     acc included; --dump always holds every field but acc)\n"
+         "  --vtk-encoding binary|ascii  VTK frames' arrays: raw binary, appended (default),\n"
+         "                     or text\n"
          "  --format vtk|csv   frame format: .vtp files plus a .pvd series, or .csv (default vtk)\n"
          "  --dump FILE        write the final state as CSV, one row per particle sorted by id\n"
          "  --quiet            no run header, progress line or summary\n"

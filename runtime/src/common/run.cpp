@@ -88,8 +88,10 @@ bool Run::frameDue(std::uint64_t step) const {
 }
 
 void Run::reserve(const Frame &frame) {
-  if (output_)
-    output_->reserve(frameBytesEstimate(frame));
+  if (!output_)
+    return;
+  output_->checkFields(frame);
+  output_->reserve(frameBytesEstimate(frame));
 }
 
 void Run::write(std::uint64_t step, const Frame &frame) {

@@ -178,14 +178,30 @@ std::string RunOutput::framePath(std::uint64_t step) const {
   return baseName_ + suffix;
 }
 
+void RunOutput::checkFields(const Frame &frame) const {
+  std::vector<std::string> unknown;
+  frameColumns(frame, options_.fields, &unknown);
+  if (unknown.empty())
+    return;
+  std::string names;
+  for (const Column &c : frame.columns)
+    names += ", " + c.name;
+  throw RunError("--fields names '" + unknown.front() +
+                 "', which is no field of this simulation (its fields: id" + names + ")");
+}
+
 void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional<double> time,
                            bool seriesByTime) {
   std::string file = framePath(step);
   std::string path = (fs::path(options_.outDir) / file).string();
+  checkFields(frame);
+  const Columns columns = frameColumns(frame, options_.fields);
   if (options_.format == OutputFormat::Vtk)
-    writeFile(path, [&](std::ostream &out) { writeVtp(frame, out, time); });
+    writeFile(path, [&](std::ostream &out) {
+      writeVtp(frame, columns, VtpOptions{.ascii = options_.vtkAscii, .time = time}, out);
+    });
   else
-    writeFile(path, [&](std::ostream &out) { writeCsv(frame, out); });
+    writeFile(path, [&](std::ostream &out) { writeCsv(frame, columns, out); });
   written_.push_back({step, time.value_or(0.0), file});
   seriesByTime_ |= time && seriesByTime;
 }

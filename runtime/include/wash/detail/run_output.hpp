@@ -67,6 +67,8 @@ public:
   /// directory and beside the --dump file (throws RunError): a disk that is
   /// already full stops the run before its first step.
   void reserve(std::uint64_t bytes);
+  /// Throws RunError if --fields names a field `frame` does not have.
+  void checkFields(const Frame &frame) const;
 
   bool frameDue(std::uint64_t step, std::uint64_t lastStep) const {
     return detail::frameDue(options_, step, lastStep);
