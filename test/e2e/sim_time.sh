@@ -98,13 +98,14 @@ expect_in out.txt "option '--output-dt' expects a positive simulated time, got '
 
 # 6. Standard output reaches a file while the run goes on: the first step's
 # line must be there long before a 10 s run ends.
-"$ref" inf slow --steps 5000 --quiet --out slow >slow.txt 2>&1 &
+"$ref" inf slow --steps 5000 --end-time 1e9 --quiet --out slow >slow.txt 2>&1 &
 pid=$!
 for _ in $(seq 50); do
   grep -q "first step done" slow.txt && break
   sleep 0.1
 done
 found=$(grep -c "first step done" slow.txt)
+kill -0 "$pid" 2>/dev/null || fail "the 10 s run had ended: the check proves nothing"
 kill "$pid" 2>/dev/null
 wait "$pid" 2>/dev/null
 [ "$found" = 1 ] || fail "nothing printed reached the file within 5 s (stdout not flushed)"
