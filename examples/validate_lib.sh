@@ -3,7 +3,8 @@
 # tree build/ at the repository root (configured with -DCMAKE_BUILD_TYPE=Release
 # if missing), runs it with argument `size` and leaves `root`, `backend`,
 # `work` (out/validate/<name>/), `state` (the --dump of the final state),
-# `plot` (where the profile plot goes) and `wall` (seconds) set.
+# `plot` (where the profile plot goes) and `wall` (seconds) set. An array
+# `run_options`, if set, adds wash options to the run.
 #
 # Environment:
 #   WASH_BACKEND  reference | serial | openmp | mpi   (default openmp)
@@ -58,6 +59,6 @@ state=$work/state_$size.csv
 plot=$work/${name}_$size.png
 echo "running $target $size (to t = $end_time)"
 start=$(date +%s.%N)
-"${run[@]}" "$size" --quiet --dump "$state" --out "$work/frames"
+"${run[@]}" "$size" --quiet --dump "$state" --out "$work/frames" ${run_options[@]+"${run_options[@]}"}
 finish=$(date +%s.%N)
 wall=$(awk -v a="$start" -v b="$finish" 'BEGIN { printf "%.2f", b - a }')

@@ -12,6 +12,8 @@ packages=(
   libpolly-$LLVM-dev
   libgtest-dev libopenmpi-dev openmpi-bin
   python3-numpy python3-scipy python3-matplotlib
+  # VTK's own reader for the VTK output tests (test/e2e/vtk_output.sh) and scripts/render_frame.py.
+  python3-vtk9
 )
 
 missing=()

@@ -8,8 +8,9 @@
 // kernel with support 2h, summation density, smoothing lengths adapted to
 // about 74 neighbours, Monaghan (1992) artificial viscosity with a Balsara
 // switch, Price (2008) artificial conductivity, the internal energy equation,
-// kick-drift-kick leapfrog with a global time step from a Min reduction (the
-// Courant condition), and wash::stop() at the end time. See README.md.
+// kick-drift-kick leapfrog with a global time step from a Min reduction into
+// the runtime's time step (the Courant condition); the run ends at t = 0.05
+// (wash::set_end_time; --end-time overrides it). See README.md.
 //
 //   sedov [n]   an n^3 lattice (default 30)
 #include <wash/wash.hpp>
@@ -102,7 +103,7 @@ void Spawn() {
 // First half kick and drift: vel and energy become the predicted full-step
 // values the force kernels see; the half-step values wait for the second kick.
 void KickDrift(wash::Particle& p) {
-    const double dt = wash::get_variable("dt");
+    const double dt = wash::get_time_step();
     wash::Vec3D velHalf = p.get_vel() + p.get_acc() * (0.5 * dt);
     double energyHalf = p.get_force_scalar("energy") + p.get_force_scalar("energy_rate") * (0.5 * dt);
     p.set_pos(p.get_pos() + velHalf * dt);
@@ -182,7 +183,7 @@ void Forces(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
 
 // Second half kick, then the smoothing length for the next step.
 void Kick(wash::Particle& p) {
-    const double dt = wash::get_variable("dt");
+    const double dt = wash::get_time_step();
     p.set_vel(p.get_force_vector("vel_half") + p.get_acc() * (0.5 * dt));
     double energy = p.get_force_scalar("energy_half") + p.get_force_scalar("energy_rate") * (0.5 * dt);
     p.set_force_scalar("energy", energy);
@@ -192,19 +193,14 @@ void Kick(wash::Particle& p) {
     p.set_smoothing_length(std::min(std::max(h, h0 / hRange), hRange * h0));
 }
 
+// The Courant time step of the forces of the previous iteration. The first
+// iteration has none yet (every particle's time_step is 0), so it has dt = 0:
+// it only evaluates the forces of the initial state.
 double TimeStep(const wash::Particle& p) { return p.get_force_scalar("time_step"); }
 
-// The clock: the first iteration has dt = 0 (it only evaluates the forces of
-// the initial state), then each step takes the Courant time step, the last one
-// shortened to end exactly at endTime.
-void Clock() {
-    const double time = wash::get_variable("time") + wash::get_variable("dt");
-    wash::set_variable("time", time);
-    if (time >= endTime * (1.0 - 1e-12)) {
-        wash::stop();
-        return;
-    }
-    wash::set_variable("dt", std::min(wash::get_variable("next_dt"), endTime - time));
+// The last step is shortened to end exactly at the end time.
+void LastStep() {
+    wash::set_time_step(std::min(wash::get_time_step(), wash::get_end_time() - wash::get_time()));
 }
 
 int main(int argc, char** argv) {
@@ -216,9 +212,6 @@ int main(int argc, char** argv) {
     wash::set_simulation_name("sedov");
     wash::add_variable("side", side);
     wash::add_variable("self_correction", 0.0);
-    wash::add_variable("time", 0.0);
-    wash::add_variable("dt", 0.0);
-    wash::add_variable("next_dt", 0.0);
     wash::add_force("pressure", 1);
     wash::add_force("energy", 1);
     wash::add_force("energy_rate", 1);
@@ -228,13 +221,13 @@ int main(int argc, char** argv) {
     wash::add_force("energy_half", 1);
     wash::add_init_kernel(&CalibrateDensity);
     wash::add_init_kernel(&Spawn);
+    wash::add_reduction_kernel(&TimeStep, wash::Reduction::Min, "time_step");
+    wash::add_void_kernel(&LastStep);
     wash::add_update_kernel(&KickDrift);
     wash::add_force_kernel(&Density);
     wash::add_force_kernel(&Forces);
     wash::add_update_kernel(&Kick);
-    wash::add_reduction_kernel(&TimeStep, wash::Reduction::Min, "next_dt");
-    wash::add_void_kernel(&Clock);
-    wash::set_max_iterations(1000000);
+    wash::set_end_time(endTime);
     wash::start();
     return 0;
 }

@@ -20,6 +20,8 @@ set -euo pipefail
 name=sedov
 size=${1:-30}
 end_time=0.05
+# The run ends at the end time; a frame (out/validate/sedov/frames/) every 0.01.
+run_options=(--end-time "$end_time" --output-dt 0.01)
 
 if ! [[ $size =~ ^[0-9]+$ ]] || ((size < 8)); then
     echo "usage: $0 [n]   (n >= 8: an n^3 lattice)" >&2

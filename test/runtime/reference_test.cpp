@@ -107,11 +107,17 @@ TEST_F(ReferenceTest, UnregisteredForcesAreCreatedOnFirstUseAndOutputAfterRegist
     EXPECT_EQ(p.get_force_vector("bravo"), ParticleVec{}); // read before any write: zero
   });
   start();
-  std::vector<std::string> names;
-  for (const auto &c : state().frame(state().particles).columns)
+  std::vector<std::string> names, dumped;
+  for (const auto &c : state().frame(state().particles).columns) {
     names.push_back(c.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"pos", "vel", "density", "mass", "smoothing_length",
-                                             "zeta", "alpha", "bravo", "yankee"}));
+    if (c.inDump)
+      dumped.push_back(c.name);
+  }
+  EXPECT_EQ(dumped, (std::vector<std::string>{"pos", "vel", "density", "mass", "smoothing_length",
+                                              "zeta", "alpha", "bravo", "yankee"}));
+  // Frames hold acc too, after vel; --dump never does.
+  ASSERT_EQ(names.size(), dumped.size() + 1);
+  EXPECT_EQ(names[2], "acc");
 }
 
 TEST_F(ReferenceTest, ANameUsedAsScalarAndVectorIsAnErrorAtTheUse) {

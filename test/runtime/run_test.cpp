@@ -33,6 +33,7 @@ struct RunTest : ::testing::Test {
                                ::testing::UnitTest::GetInstance()->current_test_info()->name());
   void SetUp() override {
     runSettings() = {.dimensions = 2};
+    detail::simTime() = {};
     programOptions() = {.outDir = out.string(), .quiet = true};
     set_influence_radius(0.5);
     set_max_iterations(4);
@@ -102,7 +103,8 @@ TEST_F(RunTest, StartUpChecksTheNeighbourRuleAndTheIterationCount) {
   set_influence_radius(0.5);
   runSettings().maxIterations.reset();
   EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
-            "no iteration count: call wash::set_max_iterations or pass --steps N");
+            "no iteration count: call wash::set_max_iterations or pass --steps N (or give an end "
+            "time: wash::set_end_time or --end-time T)");
   programOptions().steps = 7; // --steps overrides set_max_iterations
   set_max_iterations(4);
   EXPECT_EQ(detail::Run(serial2d, true).steps(), 7u);
@@ -179,4 +181,65 @@ TEST_F(RunTest, NonFiniteValuesNameStepKernelFieldAndParticle) {
   frame.columns.push_back({"density", 1, {1.0, std::nan("")}});
   EXPECT_EQ(messageOf<detail::RunError>([&] { run.checkFinite(frame, 0, "init"); }),
             "step 0: after kernel 'init': field 'density' of particle 9 is nan");
+}
+
+TEST_F(RunTest, TheTimeAdvancesByTheTimeStepAfterEachIteration) {
+  detail::Run run(serial2d, /*writes=*/false);
+  run.begin(0, [] { return detail::Frame{}; });
+  EXPECT_EQ(get_time(), 0.0);
+  EXPECT_EQ(get_time_step(), 0.0);
+  run.endStep(1, [] { return detail::Frame{}; });
+  EXPECT_EQ(get_time(), 0.0) << "no time step set: the time stays 0";
+  set_time_step(0.25);
+  run.endStep(2, [] { return detail::Frame{}; });
+  detail::setReducedTimeStep(0.5); // a reduction kernel targeting "time_step"
+  run.endStep(3, [] { return detail::Frame{}; });
+  EXPECT_EQ(get_time(), 0.75);
+  EXPECT_EQ(get_time_step(), 0.5);
+  EXPECT_EQ(run.steps(), 4u);
+}
+
+TEST_F(RunTest, TheEndTimeEndsTheRunAtTheIterationThatReachesIt) {
+  runSettings().maxIterations.reset(); // an end time needs no iteration count
+  set_end_time(1.0);
+  EXPECT_EQ(get_end_time(), 1.0);
+  programOptions().endTime = 0.5; // --end-time overrides it
+  EXPECT_EQ(get_end_time(), 0.5);
+  detail::Run run(serial2d, /*writes=*/false);
+  EXPECT_EQ(run.steps(), std::numeric_limits<std::uint64_t>::max());
+  run.begin(0, [] { return detail::Frame{}; });
+  set_time_step(0.2);
+  for (std::uint64_t step = 1; step <= run.steps(); ++step)
+    run.endStep(step, [] { return detail::Frame{}; });
+  EXPECT_EQ(run.steps(), 3u) << "0.2, 0.4, 0.6: the third step reaches 0.5";
+  EXPECT_DOUBLE_EQ(get_time(), 0.6);
+}
+
+TEST_F(RunTest, BadTimeStepsAreErrors) {
+  const int line = __LINE__ + 1;
+  std::string msg = messageOf<detail::UsageError>([] { set_time_step(-1.0); });
+  EXPECT_NE(msg.find("run_test.cpp:" + std::to_string(line) + ":"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(": error: wash::set_time_step: the time step is -1; it must be finite and "
+                     "not negative"),
+            std::string::npos)
+      << msg;
+  EXPECT_THROW(set_time_step(std::numeric_limits<double>::infinity()), detail::UsageError);
+  EXPECT_THROW(set_end_time(std::nan("")), detail::UsageError);
+  // A reduction over no particles gives +inf: the run stops at the end of the step.
+  detail::Run run(serial2d, /*writes=*/false);
+  run.begin(0, [] { return detail::Frame{}; });
+  detail::setReducedTimeStep(std::numeric_limits<double>::infinity());
+  EXPECT_EQ(messageOf<detail::RunError>([&] { run.endStep(1, [] { return detail::Frame{}; }); }),
+            "at the end of step 1: the time step is inf; it must be finite and not negative");
+  EXPECT_THROW(add_variable("time_step", 0.0), detail::UsageError);
+}
+
+TEST_F(RunTest, TheProgressLineShowsTheSimulatedTime) {
+  EXPECT_EQ(detail::Progress::timeLine(10, std::numeric_limits<std::uint64_t>::max(), 0.0125, 0.05,
+                                       3.2e6, 4.0),
+            "step 10  t = 0.0125 of 0.05  3.2e+06 particles/s  ETA 4 s");
+  EXPECT_EQ(detail::Progress::timeLine(10, 100, 0.5, std::nullopt, 3.2e6, 4.0),
+            "step 10/100  t = 0.5  3.2e+06 particles/s  ETA 4 s");
+  EXPECT_EQ(detail::Progress::line(10, 100, 3.2e6, 4.0),
+            "step 10/100  3.2e+06 particles/s  ETA 4 s");
 }

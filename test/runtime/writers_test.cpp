@@ -106,7 +106,8 @@ TEST(Writers, VtpHasPointsPaddedTo3DAndEveryColumn) {
   EXPECT_NE(s.find("NumberOfPoints=\"3\""), std::string::npos);
   EXPECT_NE(s.find("2 2.5 0 0 0.5 0 1 1.5 0"), std::string::npos); // z = 0 in 2D
   // One vertex cell per point: cell k is point k and ends at offset k + 1.
-  EXPECT_NE(s.find("Name=\"connectivity\" format=\"ascii\">\n          0 1 2\n"), std::string::npos);
+  EXPECT_NE(s.find("Name=\"connectivity\" format=\"ascii\">\n          0 1 2\n"),
+            std::string::npos);
   EXPECT_NE(s.find("Name=\"offsets\" format=\"ascii\">\n          1 2 3\n"), std::string::npos);
   for (const char *name : {"Name=\"id\"", "Name=\"vel\"", "Name=\"density\"", "Name=\"pressure\""})
     EXPECT_NE(s.find(name), std::string::npos) << name;
@@ -125,4 +126,38 @@ TEST(Frame, FindsTheFirstNonFiniteValue) {
   EXPECT_EQ(findNonFinite(f), "");
   f.columns[3].values[3] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(findNonFinite(f), "field 'pressure' of particle 0 is nan");
+}
+
+TEST(Writers, FrameOnlyColumnsAreNeverInTheDumpAndFieldsChooseFrameColumns) {
+  Frame f = sampleFrame();
+  f.columns.insert(f.columns.begin() + 2, Column{"acc", 2, {1.0, 1.0, 2.0, 2.0, 3.0, 3.0}, false});
+  std::ostringstream dump, frame;
+  writeCsv(f, dump);
+  EXPECT_EQ(dump.str().substr(0, dump.str().find('\n')),
+            "id,x,y,vx,vy,density,pressure_x,pressure_y");
+  std::vector<std::string> unknown;
+  writeCsv(f, frameColumns(f, {"pressure", "acc", "nope"}, &unknown), frame);
+  EXPECT_EQ(frame.str().substr(0, frame.str().find('\n')),
+            "id,x,y,acc_x,acc_y,pressure_x,pressure_y");
+  EXPECT_EQ(unknown, std::vector<std::string>{"nope"});
+}
+
+TEST(Writers, BinaryVtpAppendsEveryArrayRaw) {
+  std::ostringstream out;
+  Frame f = sampleFrame();
+  writeVtp(f, frameColumns(f, {}), VtpOptions{.ascii = false, .time = 0.25}, out);
+  const std::string s = out.str();
+  EXPECT_EQ(s.find("format=\"ascii\">\n"), std::string::npos);
+  EXPECT_NE(s.find("Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">0.25</DataArray>"),
+            std::string::npos);
+  // Points, connectivity, offsets, id, vel, density, pressure: a UInt64 count then the bytes.
+  const std::size_t data = s.find("<AppendedData encoding=\"raw\">\n   _") + 34;
+  std::uint64_t bytes = 0;
+  std::memcpy(&bytes, s.data() + data, sizeof bytes);
+  EXPECT_EQ(bytes, 9 * sizeof(double)); // the points, padded to 3D
+  double z1 = 1.0;
+  std::memcpy(&z1, s.data() + data + 8 + 5 * sizeof(double), sizeof z1);
+  EXPECT_EQ(z1, 0.0);
+  EXPECT_NE(s.find("Name=\"pressure\" NumberOfComponents=\"2\" format=\"appended\" offset=\""),
+            std::string::npos);
 }

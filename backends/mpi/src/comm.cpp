@@ -133,7 +133,7 @@ detail::Frame gatherFrame(const detail::Frame &local) {
   all.dimensions = local.dimensions;
   all.ids = gather(local.ids);
   for (const detail::Column &c : local.columns)
-    all.columns.push_back({c.name, c.components, gather(c.values)});
+    all.columns.push_back({c.name, c.components, gather(c.values), c.inDump});
   if (rank() != 0)
     return {};
   return all;

@@ -43,6 +43,22 @@ double get_variable(const std::string &name,
 void set_variable(const std::string &name, double value,
                   CallSite loc = CallSite::current());
 
+/// Simulated time (docs/semantics.md, "Simulated time"). The time starts at 0;
+/// after every iteration the runtime adds the time step to it. The time step
+/// starts at 0 and keeps its value until set: by main, init kernels or void
+/// kernels (not per-particle kernels, which run once per particle), or by a
+/// reduction kernel whose variable is "time_step". Any kernel may read both.
+/// A time step must be finite and not negative.
+double get_time();
+double get_time_step();
+void set_time_step(double dt, CallSite loc = CallSite::current());
+/// The run stops after the iteration at whose end the time reaches `time`
+/// (the --end-time option overrides it); get_end_time() is +inf when neither
+/// set one, so a kernel may shorten the last step to end exactly there:
+/// set_time_step(std::min(dt, get_end_time() - get_time())).
+void set_end_time(double time, CallSite loc = CallSite::current());
+double get_end_time();
+
 /// The simulation box [lo, hi) and, per axis, whether it is periodic. On a
 /// periodic axis positions wrap into [lo, hi) and neighbours are found across
 /// the faces (a neighbour's get_pos() is then its nearest image); the box must

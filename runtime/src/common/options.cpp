@@ -1,6 +1,7 @@
 #include <wash/detail/options.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <cstring>
 
 namespace wash::detail {
@@ -16,6 +17,34 @@ std::uint64_t parseCount(const std::string &option, const std::string &text) {
   return value;
 }
 
+double parseTime(const std::string &option, const std::string &text, bool positive) {
+  double value = 0.0;
+  const char *end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value) || value < 0.0 ||
+      (positive && value == 0.0))
+    throw OptionError("option '" + option + "' expects a " +
+                      (positive ? "positive" : "non-negative") + " simulated time, got '" + text +
+                      "'");
+  return value;
+}
+
+std::vector<std::string> parseFields(const std::string &text) {
+  std::vector<std::string> fields;
+  std::size_t from = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', from);
+    std::string name = text.substr(from, comma == std::string::npos ? comma : comma - from);
+    if (name.empty())
+      throw OptionError("option '--fields' expects field names separated by commas, got '" + text +
+                        "'");
+    fields.push_back(name);
+    if (comma == std::string::npos)
+      return fields;
+    from = comma + 1;
+  }
+}
+
 OutputFormat parseFormat(const std::string &text) {
   if (text == "vtk")
     return OutputFormat::Vtk;
@@ -25,8 +54,9 @@ OutputFormat parseFormat(const std::string &text) {
 }
 
 bool takesValue(const std::string &name) {
-  return name == "--steps" || name == "--out" || name == "--output-every" ||
-         name == "--format" || name == "--dump";
+  return name == "--steps" || name == "--out" || name == "--output-every" || name == "--format" ||
+         name == "--dump" || name == "--end-time" || name == "--output-dt" ||
+         name == "--vtk-encoding" || name == "--fields";
 }
 
 void apply(RunOptions &o, const std::string &name, const std::string &value) {
@@ -40,6 +70,16 @@ void apply(RunOptions &o, const std::string &name, const std::string &value) {
     o.format = parseFormat(value);
   else if (name == "--dump")
     o.dumpPath = value;
+  else if (name == "--end-time")
+    o.endTime = parseTime(name, value, /*positive=*/false);
+  else if (name == "--output-dt")
+    o.outputDt = parseTime(name, value, /*positive=*/true);
+  else if (name == "--vtk-encoding") {
+    if (value != "binary" && value != "ascii")
+      throw OptionError("option '--vtk-encoding' expects 'binary' or 'ascii', got '" + value + "'");
+    o.vtkAscii = value == "ascii";
+  } else if (name == "--fields")
+    o.fields = parseFields(value);
   if (value.empty() && (name == "--out" || name == "--dump"))
     throw OptionError("option '" + name + "' expects a path");
 }
@@ -95,6 +135,14 @@ std::string usageText(const std::string &program) {
          "  --steps N          run N iterations (overrides set_max_iterations)\n"
          "  --out DIR          output directory (default: out)\n"
          "  --output-every K   write a frame every K steps; 0 = final state only (default 0)\n"
+         "  --end-time T       stop after the iteration at whose end the simulated time\n"
+         "                     reaches T (overrides wash::set_end_time)\n"
+         "  --output-dt T      also write a frame whenever the simulated time crosses a\n"
+         "                     multiple of T (frame 0 and the last step too)\n"
+         "  --fields A,B,...   frames hold id, pos and these fields only (default: all,\n"
+         "                     acc included; --dump always holds every field but acc)\n"
+         "  --vtk-encoding binary|ascii  VTK frames' arrays: raw binary, appended (default),\n"
+         "                     or text\n"
          "  --format vtk|csv   frame format: .vtp files plus a .pvd series, or .csv (default vtk)\n"
          "  --dump FILE        write the final state as CSV, one row per particle sorted by id\n"
          "  --quiet            no run header, progress line or summary\n"

@@ -1,6 +1,8 @@
 #include <wash/detail/run.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
 
 namespace wash::detail {
 namespace {
@@ -43,9 +45,14 @@ Run::Run(const Translation &translated, bool writes)
   const RunSettings &s = runSettings();
   const RunOptions &o = programOptions();
   checkRule(translated, s.search);
-  if (!o.steps && !s.maxIterations)
-    throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N");
-  steps_ = o.steps ? *o.steps : *s.maxIterations;
+  endTime_ = o.endTime ? o.endTime : simTime().endTime;
+  outputDt_ = o.outputDt;
+  if (!o.steps && !s.maxIterations && !endTime_)
+    throw RunError("no iteration count: call wash::set_max_iterations or pass --steps N (or "
+                   "give an end time: wash::set_end_time or --end-time T)");
+  steps_ = o.steps           ? *o.steps
+           : s.maxIterations ? *s.maxIterations
+                             : std::numeric_limits<std::uint64_t>::max(); // until the end time
   radius_ = s.search.radius.value_or(0.0);
   if (std::string bad = checkBox(s.box, dimensions_, radius_); !bad.empty())
     throw RunError(bad);
@@ -55,18 +62,41 @@ Run::Run(const Translation &translated, bool writes)
 
 Run::~Run() = default;
 
+bool Run::advanceTime(std::uint64_t step) {
+  SimTime &t = simTime();
+  if (std::string bad = checkTimeStep(t.step); !bad.empty())
+    throw RunError("at the end of step " + std::to_string(step) + ": " + bad);
+  t.time += t.step;
+  return outputTimeCrossed();
+}
+
+bool Run::outputTimeCrossed() {
+  if (!outputDt_)
+    return false;
+  const double time = simTime().time, every = *outputDt_;
+  if (time < double(nextOutput_) * every)
+    return false;
+  // The next multiple beyond the time (a long step may cross several: one frame).
+  nextOutput_ = std::max(nextOutput_, std::uint64_t(std::floor(time / every)));
+  while (double(nextOutput_) * every <= time)
+    ++nextOutput_;
+  return true;
+}
+
 bool Run::frameDue(std::uint64_t step) const {
   return detail::frameDue(programOptions(), step, steps_);
 }
 
 void Run::reserve(const Frame &frame) {
-  if (output_)
-    output_->reserve(frameBytesEstimate(frame));
+  if (!output_)
+    return;
+  output_->checkFields(frame);
+  output_->reserve(frameBytesEstimate(frame));
 }
 
 void Run::write(std::uint64_t step, const Frame &frame) {
   if (output_)
-    output_->writeFrame(step, frame);
+    output_->writeFrame(step, frame, simTime().time, /*seriesByTime=*/simTime().stepSet);
 }
 
 void Run::report(const std::string &line) const {
@@ -76,13 +106,21 @@ void Run::report(const std::string &line) const {
 
 void Run::started(std::size_t particles) {
   const bool talk = writes_ && !programOptions().quiet;
-  if (talk)
-    std::printf("wash %s: '%s', %zu particles, %dD, %s, %s, %llu steps\n", backend_.c_str(),
+  if (talk) {
+    std::string length = std::to_string(steps_) + " steps";
+    if (endTime_) {
+      char until[64];
+      std::snprintf(until, sizeof until, "until t = %g", *endTime_);
+      length =
+          steps_ == std::numeric_limits<std::uint64_t>::max() ? until : length + " or " + until;
+    }
+    std::printf("wash %s: '%s', %zu particles, %dD, %s, %s, %s\n", backend_.c_str(),
                 runSettings().simulationName.c_str(), particles, dimensions_,
                 useFloat_ ? "float" : "double", runSettings().search.describe().c_str(),
-                (unsigned long long)steps_);
+                length.c_str());
+  }
   std::fflush(stdout);
-  progress_ = std::make_unique<Progress>(steps_, particles, talk);
+  progress_ = std::make_unique<Progress>(steps_, particles, talk, endTime_);
 }
 
 void Run::finish(const Frame &finalFrame) {
@@ -99,6 +137,7 @@ void Run::finish(const Frame &finalFrame) {
               seconds > 0 ? particleSteps / seconds : 0.0, stepSeconds_,
               particleSteps > 0 ? stepSeconds_ * 1e9 / particleSteps : 0.0,
               output_->directory().c_str());
+  std::fflush(stdout);
 }
 
 void Run::checkFinite(const Frame &frame, std::uint64_t step, const std::string &kernel) const {

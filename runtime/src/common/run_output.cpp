@@ -178,20 +178,41 @@ std::string RunOutput::framePath(std::uint64_t step) const {
   return baseName_ + suffix;
 }
 
-void RunOutput::writeFrame(std::uint64_t step, const Frame &frame) {
+void RunOutput::checkFields(const Frame &frame) const {
+  std::vector<std::string> unknown;
+  frameColumns(frame, options_.fields, &unknown);
+  if (unknown.empty())
+    return;
+  std::string names;
+  for (const Column &c : frame.columns)
+    names += ", " + c.name;
+  throw RunError("--fields names '" + unknown.front() +
+                 "', which is no field of this simulation (its fields: id" + names + ")");
+}
+
+void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional<double> time,
+                           bool seriesByTime) {
   std::string file = framePath(step);
   std::string path = (fs::path(options_.outDir) / file).string();
+  checkFields(frame);
+  const Columns columns = frameColumns(frame, options_.fields);
   if (options_.format == OutputFormat::Vtk)
-    writeFile(path, [&](std::ostream &out) { writeVtp(frame, out); });
+    writeFile(path, [&](std::ostream &out) {
+      writeVtp(frame, columns, VtpOptions{.ascii = options_.vtkAscii, .time = time}, out);
+    });
   else
-    writeFile(path, [&](std::ostream &out) { writeCsv(frame, out); });
-  written_.emplace_back(static_cast<double>(step), file);
+    writeFile(path, [&](std::ostream &out) { writeCsv(frame, columns, out); });
+  written_.push_back({step, time.value_or(0.0), file});
+  seriesByTime_ |= time && seriesByTime;
 }
 
 void RunOutput::finish(const Frame &finalFrame) {
   if (options_.format == OutputFormat::Vtk && !written_.empty()) {
     std::string path = (fs::path(options_.outDir) / (baseName_ + ".pvd")).string();
-    writeFile(path, [&](std::ostream &out) { writePvd(written_, out); });
+    std::vector<std::pair<double, std::string>> series;
+    for (const Written &w : written_)
+      series.emplace_back(seriesByTime_ ? w.time : double(w.step), w.file);
+    writeFile(path, [&](std::ostream &out) { writePvd(series, out); });
   }
   if (!options_.dumpPath.empty())
     writeCsvFile(finalFrame, options_.dumpPath);

@@ -1,5 +1,6 @@
 // wash/settings.hpp's global variables: the same in the reference and every backend.
 #include <wash/detail/run_output.hpp>
+#include <wash/detail/sim_time.hpp>
 #include <wash/detail/variables.hpp>
 #include <wash/settings.hpp>
 
@@ -19,6 +20,9 @@ void usageErrorAt(const CallSite &loc, const std::string &message) {
 } // namespace detail
 
 void add_variable(const std::string &name, double initial, CallSite loc) {
+  if (name == detail::timeStepTarget)
+    detail::usageErrorAt(loc, "'time_step' is not a variable name: a reduction kernel with that "
+                              "target sets the time step (wash::get_time_step)");
   if (!detail::variables().emplace(name, initial).second)
     detail::usageErrorAt(loc, "variable '" + name + "' is added twice");
 }

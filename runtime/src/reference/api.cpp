@@ -5,6 +5,8 @@
 //===----------------------------------------------------------------------===//
 #include "state.hpp"
 
+#include <wash/detail/sim_time.hpp>
+
 #include <cxxabi.h>
 #include <dlfcn.h>
 
@@ -70,7 +72,8 @@ void add_void_kernel(VoidKernel kernel) {
 }
 void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
                           CallSite loc) {
-  get_variable(variable, loc); // it must exist
+  if (variable != detail::timeStepTarget)
+    get_variable(variable, loc); // it must exist
   addKernel(detail::Kernel::ReductionKind, reinterpret_cast<void *>(kernel), "reduction");
   state().kernels.back().reduceOp = int(op);
   state().kernels.back().variable = variable;

@@ -13,6 +13,7 @@
 #include <wash/detail/reduction.hpp>
 #include <wash/detail/run.hpp>
 #include <wash/detail/search.hpp>
+#include <wash/detail/sim_time.hpp>
 
 #include <new>
 
@@ -120,7 +121,11 @@ void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
     std::vector<double> values; // storage order is id order in the reference
     for (std::size_t i = 0; i < s.particles.size(); ++i)
       values.push_back(reinterpret_cast<ReductionKernel>(k.function)(Particle(&s.particles, i)));
-    set_variable(k.variable, detail::reduceInIdOrder(values, detail::ReduceOp(k.reduceOp)));
+    const double reduced = detail::reduceInIdOrder(values, detail::ReduceOp(k.reduceOp));
+    if (k.variable == detail::timeStepTarget)
+      detail::setReducedTimeStep(reduced);
+    else
+      set_variable(k.variable, reduced);
     break;
   }
   case Kernel::ForceKind:

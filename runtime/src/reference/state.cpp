@@ -76,6 +76,8 @@ Frame State::frame(const ParticleStore &store) const {
   frame.ids = store.id;
   addVector(frame, "pos", store.pos, n);
   addVector(frame, "vel", store.vel, n);
+  addVector(frame, "acc", store.acc, n);
+  frame.columns.back().inDump = false; // frames only: --dump keeps its columns
   addScalar(frame, "density", store.density, n);
   addScalar(frame, "mass", store.mass, n);
   addScalar(frame, "smoothing_length", store.smoothingLength, n);

@@ -56,6 +56,13 @@ void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
     else
       OS << "  f." << (F->Kind == ForceKind::Vector ? "vector" : "scalar") << "(\"" << F->Name
          << "\", P." << Plan.Member.at(F->Name) << ");\n";
+    if (F->Name == "vel") { // acc follows, in frames only (the reference's order)
+      if (Plan.Member.count("acc"))
+        OS << "  f.vector(\"acc\", P." << Plan.Member.at("acc") << ");\n";
+      else
+        OS << "  f.zeros(\"acc\", " << Plan.Dim << ");\n";
+      OS << "  f.frameOnly();\n";
+    }
   }
 }
 
@@ -150,8 +157,10 @@ void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee)
      << "        Self self{i};\n"
      << "        values[i] = " << Callee << "(self);\n"
      << "      });\n"
-     << "      " << rt::SetVariable << "(" << stringLiteral(K.Variable)
-     << ", backend.reduce(P.id, values, " << rt::ReduceOp << "::" << Op << "));\n"
+     << "      "
+     << (K.Variable == TimeStepTarget ? rt::SetReducedTimeStep + "("
+                                      : rt::SetVariable + "(" + stringLiteral(K.Variable) + ", ")
+     << "backend.reduce(P.id, values, " << rt::ReduceOp << "::" << Op << "));\n"
      << "    }\n";
 }
 

@@ -44,8 +44,8 @@ public:
       AnyName = true;
     else if (Adds)
       Added.push_back(*Name);
-    else if (Name)
-      Uses.push_back({*Name, Arg->getExprLoc()});
+    else if (Name && !(Call->Id == ApiCall::add_reduction_kernel && *Name == TimeStepTarget))
+      Uses.push_back({*Name, Arg->getExprLoc()}); // "time_step" is the time step, not a variable
     return true;
   }
 

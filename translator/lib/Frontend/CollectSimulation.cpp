@@ -127,6 +127,7 @@ private:
       break;
     case ApiCall::set_bounding_box:
     case ApiCall::add_variable:
+    case ApiCall::set_end_time:
       break; // Run-time settings: the generated program makes the same call.
     case ApiCall::add_init_kernel:
     case ApiCall::add_update_kernel:
@@ -135,6 +136,10 @@ private:
     case ApiCall::add_reduction_kernel:
     case ApiCall::get_variable:
     case ApiCall::set_variable:
+    case ApiCall::get_time:
+    case ApiCall::get_time_step:
+    case ApiCall::set_time_step:
+    case ApiCall::get_end_time:
     case ApiCall::create_particle:
     case ApiCall::stop:
       break; // Kernels are registered above; the rest is not read from main.

@@ -242,6 +242,13 @@ void KernelAnalyser::call(const CallExpr *CE) {
              {kernelKindName(K.Kind), K.Function});
     return;
   }
+  if (isWashCall(FD, ApiCall::set_time_step) &&
+      (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
+       K.Kind == KernelKind::Reduction)) {
+    D.report(DiagId::TimeStepWriteInParticleKernel, CE->getBeginLoc(),
+             {kernelKindName(K.Kind), K.Function});
+    return;
+  }
   if (isWashFunction(FD)) {
     // User code in namespace wash is not the API, but is not followed either.
     if (!washCall(FD) && isUserCode(Ctx.getSourceManager(), FD) && anyParticleArg(CE))

@@ -17,6 +17,7 @@ struct Column {
   std::string name;
   int components = 1;         ///< 1 for scalars, the dimension for vectors
   std::vector<double> values; ///< particle-major: values[p * components + c]
+  bool inDump = true;         ///< false: in frames only, never in --dump (acc)
 };
 
 struct Frame {

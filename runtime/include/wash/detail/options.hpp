@@ -24,6 +24,10 @@ struct RunOptions {
   std::string dumpPath; ///< empty: no dump
   bool quiet = false;
   bool help = false;
+  std::optional<double> endTime;   ///< stop after the iteration that reaches it
+  std::optional<double> outputDt;  ///< a frame whenever the time crosses a multiple
+  bool vtkAscii = false;           ///< --vtk-encoding ascii (default binary)
+  std::vector<std::string> fields; ///< --fields: what frames hold (empty: everything)
 };
 
 struct ParsedArgs {

@@ -13,6 +13,7 @@
 #include <wash/detail/progress.hpp>
 #include <wash/detail/run_output.hpp>
 #include <wash/detail/run_settings.hpp>
+#include <wash/detail/sim_time.hpp>
 #include <wash/vec.hpp>
 
 #include <chrono>
@@ -71,20 +72,23 @@ public:
     runStage() = {particles, 0, true, steps_};
     const Frame first = built(frame);
     reserve(first);
-    if (frameDue(0))
+    if (frameDue(0) || outputTimeCrossed())
       write(0, first);
     runStage().step = 1;
     stepStart_ = Clock::now();
   }
   /// After every kernel of a step.
+  /// Advances the simulated time by the time step; the step is the last when
+  /// wash::stop() was called or the time reached the end time.
   template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
     stepSeconds_ += std::chrono::duration<double>(Clock::now() - stepStart_).count();
-    if (runSettings().stopRequested)
-      runStage().steps = steps_ = step; // wash::stop(): this step is the last, and written as such
-    if (frameDue(step))
+    const bool timeFrame = advanceTime(step);
+    if (runSettings().stopRequested || endTimeReached())
+      runStage().steps = steps_ = step; // this step is the last, and written as such
+    if (frameDue(step) || timeFrame)
       write(step, built(frame));
     if (progress_)
-      progress_->update(step);
+      progress_->update(step, simTime().time);
     runStage().step = step + 1;
     stepStart_ = Clock::now();
   }
@@ -119,6 +123,12 @@ private:
     }
   }
   void started(std::size_t particles);
+  /// Adds the time step to the time (after checking it); whether a frame is
+  /// due by --output-dt.
+  bool advanceTime(std::uint64_t step);
+  /// Whether the time crossed the next multiple of --output-dt (then moved on).
+  bool outputTimeCrossed();
+  bool endTimeReached() const { return endTime_ && simTime().time >= *endTime_; }
   bool frameDue(std::uint64_t step) const;
   void reserve(const Frame &frame);
   void write(std::uint64_t step, const Frame &frame);
@@ -142,6 +152,8 @@ private:
   bool useFloat_, writes_;
   std::uint64_t steps_ = 0;
   double radius_ = 0.0;
+  std::optional<double> endTime_, outputDt_;
+  std::uint64_t nextOutput_ = 0; ///< the multiple of outputDt_ the next time frame waits for
   std::unique_ptr<RunOutput> output_;
   std::unique_ptr<Progress> progress_;
   // The steps' own time, frames written excluded: what the summary reports

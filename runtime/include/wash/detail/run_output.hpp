@@ -10,6 +10,7 @@
 #include <wash/detail/options.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -66,11 +67,17 @@ public:
   /// directory and beside the --dump file (throws RunError): a disk that is
   /// already full stops the run before its first step.
   void reserve(std::uint64_t bytes);
+  /// Throws RunError if --fields names a field `frame` does not have.
+  void checkFields(const Frame &frame) const;
 
   bool frameDue(std::uint64_t step, std::uint64_t lastStep) const {
     return detail::frameDue(options_, step, lastStep);
   }
-  void writeFrame(std::uint64_t step, const Frame &frame);
+  /// With a simulated time, VTK frames carry it (TimeValue); the .pvd series
+  /// lists every frame at its time once a frame was written `seriesByTime`
+  /// (time steps are set), else at its step number.
+  void writeFrame(std::uint64_t step, const Frame &frame, std::optional<double> time = std::nullopt,
+                  bool seriesByTime = false);
   /// Writes the .pvd series (VTK) and the --dump file, if asked for.
   void finish(const Frame &finalFrame);
 
@@ -82,7 +89,13 @@ private:
 
   RunOptions options_;
   std::string baseName_;
-  std::vector<std::pair<double, std::string>> written_;
+  struct Written {
+    std::uint64_t step;
+    double time;
+    std::string file;
+  };
+  std::vector<Written> written_;
+  bool seriesByTime_ = false;
 };
 
 /// Writes frame as CSV to path (throws RunError if it cannot).

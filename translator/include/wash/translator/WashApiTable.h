@@ -76,6 +76,10 @@ struct ApiCallInfo {
   bool readFromMain() const { return Use != CallUse::Anywhere; }
 };
 
+/// The reduction target that is the time step (wash::get_time_step), not a
+/// variable: wash/detail/sim_time.hpp's timeStepTarget.
+inline constexpr std::string_view TimeStepTarget = "time_step";
+
 std::span<const ApiCallInfo> apiCalls();
 const ApiCallInfo *apiCall(std::string_view Name);
 const ApiCallInfo &apiCall(ApiCall Id);

@@ -37,6 +37,8 @@ public:
   void zeros(const char *name, int components) {
     frame_.columns.push_back({name, components, std::vector<double>(frame_.size() * components)});
   }
+  /// The column added last goes to frames only, not to --dump (acc).
+  void frameOnly() { frame_.columns.back().inDump = false; }
   detail::Frame take() { return std::move(frame_); }
 
 private:

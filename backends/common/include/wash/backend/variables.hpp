@@ -17,7 +17,7 @@
 
 #include <cstddef>
 #include <initializer_list>
-#include <source_location>
+#include <wash/call_site.hpp>
 #include <string>
 
 namespace wash::backend {
@@ -47,7 +47,7 @@ namespace wash {
 
 /// get_variable(name) for the slot of that name (see above).
 inline double get_variable(const backend::VariableSlot &slot,
-                           std::source_location loc = std::source_location::current()) {
+                           CallSite loc = CallSite::current()) {
   if (slot.value) [[likely]]
     return *slot.value;
   return get_variable(std::string(slot.name, slot.length), loc);
