@@ -10,22 +10,35 @@
 //  - registration calls become `(void)0`, `wash::start()` the generated
 //    driver, `wash::create_particle` the generated one, and the
 //    `#include <wash/wash.hpp>` the generated storage header.
+// The same holds in every user header the simulation includes (Emit/UserFiles):
+// each is rewritten too, and the includes between them name the copies.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
 
 #include "wash/translator/Emit/CodePlan.h"
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/Includes.h"
 
 #include "clang/AST/ASTContext.h"
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace wash::tr {
 
-/// The rewritten main file, or nothing after an error (reported through D).
-std::optional<std::string> rewriteSource(clang::ASTContext &Ctx, const CodePlan &Plan,
-                                         Diagnoser &D);
+struct RewrittenFile {
+  std::string Original;    ///< The user's file, absolute.
+  std::string ProjectPath; ///< Where its copy goes, relative to the project.
+  std::string Text;        ///< Rewritten, with the original's line numbers.
+};
+
+/// The rewritten main file, then each rewritten header, or nothing after an
+/// error (reported through D).
+std::optional<std::vector<RewrittenFile>> rewriteSource(clang::ASTContext &Ctx,
+                                                        const CodePlan &Plan,
+                                                        const IncludeDirectives &Includes,
+                                                        Diagnoser &D);
 
 } // namespace wash::tr
