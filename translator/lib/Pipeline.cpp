@@ -174,9 +174,12 @@ int runPipeline(const Options &Opts) {
   Model M;
   M.SourceFile = Opts.Source;
   std::vector<GeneratedFile> Files;
+  std::vector<std::string> Inputs;
   bool Failed = false;
-  bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim) {
+  bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim,
+                                          const IncludeDirectives &Includes) {
     AstRefs Refs;
+    Inputs = inputFiles(Opts.Source, Includes);
     analyse(Ctx, D, Dim, DumpAfter, M, Refs);
     // Reported while the AST's source manager can still place them.
     for (const Finding &F : M.Findings)
@@ -184,7 +187,7 @@ int runPipeline(const Options &Opts) {
     Failed = D.hasErrors() || M.hasErrors();
     // Emit: rewrite the user's code and generate the rest, still in memory.
     if (!Failed && !DumpAfter)
-      Failed = !emitProgram(Ctx, D, M, Refs, Opts, Files) || D.hasErrors();
+      Failed = !emitProgram(Ctx, D, M, Refs, Includes, Opts, Files) || D.hasErrors();
   });
   if (!Parsed || Failed)
     return 1;
@@ -195,6 +198,10 @@ int runPipeline(const Options &Opts) {
   }
   // Write: only once everything succeeded, so an error leaves no partial output.
   std::string Error = writeProject(Opts.OutputDir, Files);
+  // The depfile last: a build that sees it sees the project it describes.
+  if (Error.empty() && !Opts.DepFile.empty())
+    Error =
+        writeDepfile(Opts.DepFile, Opts.OutputDir + "/" + Files[1].Name /* the program */, Inputs);
   if (!Error.empty()) {
     llvm::errs() << "wash: error: " << Error << "\n";
     return 1;

@@ -25,6 +25,11 @@ static cl::opt<Backend> TargetBackend("backend", cl::desc("Backend to generate c
                                       cl::init(Backend::Serial), cl::cat(WashCategory));
 static cl::opt<std::string> OutputDir("o", cl::desc("Directory for generated code"),
                                       cl::value_desc("dir"), cl::init("."), cl::cat(WashCategory));
+static cl::opt<std::string>
+    DepFile("depfile",
+            cl::desc("Also write a depfile (Makefile syntax) naming every file the translation "
+                     "read: the simulation and each header it includes"),
+            cl::value_desc("file"), cl::cat(WashCategory));
 static cl::opt<bool> DumpModel("dump-model",
                                cl::desc("Print the analysed model of the simulation and stop"),
                                cl::cat(WashCategory));
@@ -73,6 +78,7 @@ int main(int Argc, const char **Argv) {
     Opts.CompilerArgs.push_back(Argv[I]);
   Opts.Target = TargetBackend;
   Opts.OutputDir = OutputDir;
+  Opts.DepFile = DepFile;
   Opts.DumpModel = DumpModel;
   if (DumpAfter.getNumOccurrences())
     Opts.DumpAfter = wash::tr::findPass(DumpAfter);

@@ -107,27 +107,28 @@ HeaderApi parseHeader() {
   if (const char *Prefix = std::getenv("WASH_API_TEST_PREFIX"))
     Opts.ExecutablePath = std::string(Prefix) + "/bin/wash";
   HeaderApi Api;
-  bool Parsed = parseSimulation(Opts, [&](ASTContext &Ctx, Diagnoser &, unsigned) {
-    const SourceManager &SM = Ctx.getSourceManager();
-    for (const Decl *D : Ctx.getTranslationUnitDecl()->decls()) {
-      const auto *NS = dyn_cast<NamespaceDecl>(D);
-      if (!NS || NS->getName() != "wash")
-        continue;
-      for (const Decl *Member : NS->decls()) {
-        const auto *F = function(Member);
-        if (F && F->isFirstDecl() && isWashFunction(F) && inApiHeader(SM, F->getLocation()))
-          Api.Functions[F->getName().str()].push_back(signature(F, Ctx));
-        const auto *RD = dyn_cast<CXXRecordDecl>(Member);
-        if (!RD || RD->getName() != "Particle" || !RD->isThisDeclarationADefinition())
-          continue;
-        for (const Decl *M : RD->decls()) {
-          const auto *MD = dyn_cast_or_null<CXXMethodDecl>(function(M));
-          if (MD && MD->isFirstDecl() && !MD->isImplicit() && MD->getAccess() == AS_public)
-            Api.Methods[MD->getNameAsString()].push_back(signature(MD, Ctx));
+  bool Parsed =
+      parseSimulation(Opts, [&](ASTContext &Ctx, Diagnoser &, unsigned, const IncludeDirectives &) {
+        const SourceManager &SM = Ctx.getSourceManager();
+        for (const Decl *D : Ctx.getTranslationUnitDecl()->decls()) {
+          const auto *NS = dyn_cast<NamespaceDecl>(D);
+          if (!NS || NS->getName() != "wash")
+            continue;
+          for (const Decl *Member : NS->decls()) {
+            const auto *F = function(Member);
+            if (F && F->isFirstDecl() && isWashFunction(F) && inApiHeader(SM, F->getLocation()))
+              Api.Functions[F->getName().str()].push_back(signature(F, Ctx));
+            const auto *RD = dyn_cast<CXXRecordDecl>(Member);
+            if (!RD || RD->getName() != "Particle" || !RD->isThisDeclarationADefinition())
+              continue;
+            for (const Decl *M : RD->decls()) {
+              const auto *MD = dyn_cast_or_null<CXXMethodDecl>(function(M));
+              if (MD && MD->isFirstDecl() && !MD->isImplicit() && MD->getAccess() == AS_public)
+                Api.Methods[MD->getNameAsString()].push_back(signature(MD, Ctx));
+            }
+          }
         }
-      }
-    }
-  });
+      });
   llvm::sys::fs::remove(Source);
   EXPECT_TRUE(Parsed) << "wash/wash.hpp did not compile";
   return Api;

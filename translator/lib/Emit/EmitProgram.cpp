@@ -52,13 +52,17 @@ std::string absolute(const std::string &Path) {
 } // namespace
 
 bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
-                 const Options &Opts, std::vector<GeneratedFile> &Files) {
+                 const IncludeDirectives &Includes, const Options &Opts,
+                 std::vector<GeneratedFile> &Files) {
   CodePlan Plan = planCode(M, Opts.Target, llvm::sys::path::stem(Opts.Source).str());
-  std::optional<std::string> Body = rewriteSource(Ctx, Plan, D, &Plan.Variables);
-  if (!Body)
+  std::optional<std::vector<RewrittenFile>> Rewritten =
+      rewriteSource(Ctx, Plan, Includes, D, &Plan.Variables);
+  if (!Rewritten)
     return false;
-  if (Body->empty() || Body->back() != '\n')
-    *Body += '\n';
+  for (RewrittenFile &F : *Rewritten)
+    if (F.Text.empty() || F.Text.back() != '\n')
+      F.Text += '\n';
+  std::string *Body = &Rewritten->front().Text;
 
   std::vector<std::string> Callees;
   for (const clang::FunctionDecl *FD : Refs.Kernels)
@@ -75,6 +79,13 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
   Files = {{Plan.headerName(), emitStorageHeader(M, Plan)},
            {Plan.sourceName(), Source},
            {"CMakeLists.txt", emitCMakeLists(Plan, packageHints(Opts))}};
+  // Each header the simulation includes, rewritten, keeps its file name and
+  // line numbers the same way.
+  for (size_t I = 1; I < Rewritten->size(); ++I) {
+    const RewrittenFile &F = (*Rewritten)[I];
+    Files.push_back(
+        {F.ProjectPath, generatedBanner(Plan) + "#line 1 \"" + F.Original + "\"\n" + F.Text});
+  }
   return true;
 }
 

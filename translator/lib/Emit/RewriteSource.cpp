@@ -1,11 +1,11 @@
 //===- RewriteSource.cpp - lowering particle accesses in the user's code --===//
 #include "wash/translator/Emit/RewriteSource.h"
+#include "wash/translator/Emit/UserFiles.h"
 #include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/ParentMapContext.h"
 #include "clang/AST/RecursiveASTVisitor.h"
 #include "clang/Lex/Lexer.h"
-#include "llvm/Support/Regex.h"
 
 #include <algorithm>
 #include <cctype>
@@ -30,25 +30,28 @@ bool isParticleVector(QualType T) {
   return Spec && Spec->getName() == "vector" && involvesParticle(T);
 }
 
-/// The user's file with replacements of ranges of its text. A replacement
-/// may cover earlier ones (the lowering is post-order: an access's arguments
-/// are lowered before it). Edits are found by offset, so the text of a range
-/// costs its length; clang's Rewriter walks the buffer from its start for
-/// each, which made long kernels quadratic.
+/// The user's files with replacements of ranges of their text. A
+/// replacement may cover earlier ones (the lowering is post-order: an
+/// access's arguments are lowered before it). Edits are found by offset, so
+/// the text of a range costs its length; clang's Rewriter walks the buffer
+/// from its start for each, which made long kernels quadratic.
 class Edits {
 public:
-  Edits(SourceManager &SM, const LangOptions &LangOpts)
-      : SM(SM), LangOpts(LangOpts), Main(SM.getMainFileID()), Buffer(SM.getBufferData(Main)) {}
+  Edits(SourceManager &SM, const LangOptions &LangOpts, const UserFiles &Files)
+      : SM(SM), LangOpts(LangOpts), Files(Files) {}
 
   /// The text of a token range as rewritten so far ("" in a macro).
   std::string text(SourceRange Range) const {
     if (Range.getBegin().isMacroID() || Range.getEnd().isMacroID())
       return "";
-    auto [Begin, End] = offsets(Range);
-    if (SM.getFileID(Range.getBegin()) != Main)
+    FileID F = Files.rewritten(Range.getBegin());
+    if (F.isInvalid())
       return Lexer::getSourceText(CharSourceRange::getTokenRange(Range), SM, LangOpts).str();
+    auto [Begin, End] = offsets(Range);
+    StringRef Buffer = SM.getBufferData(F);
     std::string Out;
     unsigned At = Begin;
+    const auto &Replaced = Edited[F];
     for (auto I = Replaced.lower_bound(Begin); I != Replaced.end() && I->first < End; ++I) {
       Out.append(Buffer.substr(At, I->first - At));
       Out += I->second.second;
@@ -59,24 +62,26 @@ public:
     return Out;
   }
 
-  /// Replaces a token range of the main file; the replacements inside it go.
+  /// Replaces a token range of a rewritten file; the replacements inside it go.
   void replace(SourceRange Range, std::string Text) {
-    if (SM.getFileID(Range.getBegin()) != Main)
+    FileID F = Files.rewritten(Range.getBegin());
+    if (F.isInvalid())
       return;
     auto [Begin, End] = offsets(Range);
-    replace(Begin, End, std::move(Text));
+    replace(F, Begin, End, std::move(Text));
   }
 
-  void replace(unsigned Begin, unsigned End, std::string Text) {
+  void replace(FileID F, unsigned Begin, unsigned End, std::string Text) {
+    auto &Replaced = Edited[F];
     Replaced.erase(Replaced.lower_bound(Begin), Replaced.lower_bound(End));
     Replaced[Begin] = {End, std::move(Text)};
   }
 
-  bool empty() const { return Replaced.empty(); }
-  std::string result() const {
+  std::string result(FileID F) const {
+    StringRef Buffer = SM.getBufferData(F);
     std::string Out;
     unsigned At = 0;
-    for (const auto &[Begin, Edit] : Replaced) {
+    for (const auto &[Begin, Edit] : Edited[F]) {
       if (Begin < At) // overlaps the one before: cannot happen post-order
         continue;
       Out.append(Buffer.substr(At, Begin - At));
@@ -96,29 +101,28 @@ private:
 
   SourceManager &SM;
   const LangOptions &LangOpts;
-  FileID Main;
-  StringRef Buffer;
-  /// Begin offset -> (end offset, new text), non-overlapping.
-  std::map<unsigned, std::pair<unsigned, std::string>> Replaced;
+  const UserFiles &Files;
+  /// Per rewritten file: begin offset -> (end offset, new text), non-overlapping.
+  mutable std::map<FileID, std::map<unsigned, std::pair<unsigned, std::string>>> Edited;
 };
 
 class Lowering : public RecursiveASTVisitor<Lowering> {
 public:
-  Lowering(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D, Edits &R)
-      : Ctx(Ctx), SM(Ctx.getSourceManager()), Plan(Plan), D(D), R(R) {}
+  Lowering(ASTContext &Ctx, const CodePlan &Plan, const UserFiles &Files, Diagnoser &D, Edits &R)
+      : Ctx(Ctx), SM(Ctx.getSourceManager()), Plan(Plan), Files(Files), D(D), R(R) {}
 
   // Children first, so that an access's arguments are lowered before it.
   bool shouldTraversePostOrder() const { return true; }
 
   bool TraverseDecl(Decl *Decl) {
-    // Only the user's file: the API and system headers stay as they are.
-    if (Decl && !isa<TranslationUnitDecl>(Decl) && !inMainFile(Decl->getBeginLoc()))
+    // Only the user's files: the API and system headers stay as they are.
+    if (Decl && !isa<TranslationUnitDecl>(Decl) && !inUserFile(Decl->getBeginLoc()))
       return true;
     return RecursiveASTVisitor::TraverseDecl(Decl);
   }
 
   bool TraverseTypeLoc(TypeLoc TL) {
-    if (!TL || !inMainFile(TL.getBeginLoc()))
+    if (!TL || !inUserFile(TL.getBeginLoc()))
       return RecursiveASTVisitor::TraverseTypeLoc(TL);
     if (auto Ref = TL.getAs<LValueReferenceTypeLoc>()) {
       TypeLoc Pointee = Ref.getPointeeLoc();
@@ -138,9 +142,11 @@ public:
   }
 
   bool VisitCXXMemberCallExpr(CXXMemberCallExpr *E) {
-    if (!inMainFile(E->getBeginLoc()))
+    if (!inUserFile(E->getBeginLoc()))
       return true;
-    if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID())
+    // Distance uses are found (by line and column) in the main file only.
+    if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID() &&
+        SM.isWrittenInMainFile(E->getBeginLoc()))
       if (auto Distance = Plan.distanceText(D.toPos(E->getBeginLoc()), text(E->getSourceRange())))
         return replace(E->getSourceRange(), *Distance);
     auto Accessor = particleAccessor(E->getMethodDecl());
@@ -180,7 +186,7 @@ public:
 
   bool VisitCallExpr(CallExpr *E) {
     const ApiCallInfo *Call = washCall(E->getDirectCallee());
-    if (!inMainFile(E->getBeginLoc()) || !Call)
+    if (!inUserFile(E->getBeginLoc()) || !Call)
       return true;
     switch (Call->Lowering) {
     case CallLowering::Drop:
@@ -215,29 +221,49 @@ public:
   /// The variables lowerVariableRead gave slots, in order of first use.
   std::vector<std::string> Variables;
 
-  /// The `#include <wash/wash.hpp>` line becomes the generated header's.
-  void replaceApiInclude() {
-    FileID Main = SM.getMainFileID();
-    StringRef Buffer = SM.getBufferData(Main);
-    llvm::Regex Include("^[ \t]*#[ \t]*include[ \t]*[<\"]wash/wash\\.hpp[>\"]");
-    size_t Offset = 0;
-    while (Offset < Buffer.size()) {
-      size_t End = Buffer.find('\n', Offset);
-      StringRef Line =
-          Buffer.substr(Offset, End == StringRef::npos ? StringRef::npos : End - Offset);
-      if (Include.match(Line)) {
-        R.replace(Offset, Offset + Line.size(), "#include \"" + Plan.headerName() + "\"");
-        return;
+  /// Each include directive in a rewritten file that names another one
+  /// names its copy instead; `#include <wash/wash.hpp>` becomes the
+  /// generated header's, which declares what the API does for generated code
+  /// (both in one program would define wash::dimensions twice).
+  void redirectIncludes(const IncludeDirectives &Includes) {
+    for (const IncludeDirective &I : Includes) {
+      FileID From = Files.rewritten(I.Hash);
+      if (From.isInvalid() || !I.File)
+        continue;
+      FileID To = I.SystemFile ? FileID() : Files.rewritten(SM.translateFile(*I.File));
+      bool Api = I.SystemFile && isApiHeader(I.File->getName());
+      if (!Api && To.isInvalid())
+        continue;
+      if (I.Hash.isMacroID() || I.FileName.getBegin().isMacroID()) {
+        D.report(DiagId::CodegenInMacro, SM.getExpansionLoc(I.Hash));
+        continue;
       }
-      if (End == StringRef::npos)
-        break;
-      Offset = End + 1;
+      const std::string &FromPath = Files.projectPath(From);
+      unsigned Begin = SM.getFileOffset(I.FileName.getBegin());
+      unsigned End = SM.getFileOffset(I.FileName.getEnd());
+      if (I.FileName.isTokenRange())
+        End += Lexer::MeasureTokenLength(I.FileName.getEnd(), SM, Ctx.getLangOpts());
+      if (!Api) {
+        R.replace(From, Begin, End, includeSpelling(FromPath, Files.projectPath(To)));
+        continue;
+      }
+      // The whole directive, from the start of its line when only blanks
+      // come before it.
+      unsigned Hash = SM.getFileOffset(I.Hash);
+      StringRef Buffer = SM.getBufferData(From);
+      size_t LineStart = Buffer.rfind('\n', Hash);
+      LineStart = LineStart == StringRef::npos ? 0 : LineStart + 1;
+      if (Buffer.slice(LineStart, Hash).find_first_not_of(" \t") == StringRef::npos)
+        Hash = LineStart;
+      R.replace(From, Hash, End, "#include " + includeSpelling(FromPath, Plan.headerName()));
     }
   }
 
 private:
-  bool inMainFile(SourceLocation L) const {
-    return L.isValid() && SM.isWrittenInMainFile(SM.getExpansionLoc(L));
+  bool inUserFile(SourceLocation L) const { return Files.rewritten(L).isValid(); }
+
+  static bool isApiHeader(StringRef Name) {
+    return Name.ends_with("/wash/wash.hpp") || Name == "wash/wash.hpp";
   }
 
   /// Begin moved back over a written `std::` or `wash::` (or `::wash::`,
@@ -323,6 +349,7 @@ private:
   ASTContext &Ctx;
   SourceManager &SM;
   const CodePlan &Plan;
+  const UserFiles &Files;
   Diagnoser &D;
   Edits &R;
   std::set<std::pair<unsigned, unsigned>> Done;
@@ -330,17 +357,23 @@ private:
 
 } // namespace
 
-std::optional<std::string> rewriteSource(ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D,
-                                         std::vector<std::string> *Variables) {
-  Edits R(Ctx.getSourceManager(), Ctx.getLangOpts());
-  Lowering L(Ctx, Plan, D, R);
+std::optional<std::vector<RewrittenFile>> rewriteSource(ASTContext &Ctx, const CodePlan &Plan,
+                                                        const IncludeDirectives &Includes,
+                                                        Diagnoser &D,
+                                                        std::vector<std::string> *Variables) {
+  UserFiles Files(Ctx.getSourceManager(), Includes, Plan.sourceName());
+  Edits R(Ctx.getSourceManager(), Ctx.getLangOpts(), Files);
+  Lowering L(Ctx, Plan, Files, D, R);
   L.TraverseDecl(Ctx.getTranslationUnitDecl());
-  L.replaceApiInclude();
+  L.redirectIncludes(Includes);
   if (D.hasErrors())
     return std::nullopt;
   if (Variables)
     *Variables = L.Variables;
-  return R.result();
+  std::vector<RewrittenFile> Out;
+  for (FileID F : Files.files())
+    Out.push_back({Files.original(F), Files.projectPath(F), R.result(F)});
+  return Out;
 }
 
 } // namespace wash::tr

@@ -7,6 +7,9 @@
 // wrote there; anything else in such a folder (a build folder, say) is the
 // user's and is carried over untouched.
 //
+// A generated file may lie in a subfolder (`user/...`, the rewritten
+// headers): the marker lists paths, and the folder's entry is wash's.
+//
 // A folder that cannot be swapped (the working directory or one above it, a
 // mount point) is filled in place instead: every file is written in full to
 // a staging folder inside it first, then renamed over its old version.
@@ -67,6 +70,19 @@ std::string writeFile(const std::string &Path, llvm::StringRef Text) {
   return "";
 }
 
+/// The entry of Dir that holds Name: its first component.
+llvm::StringRef topEntry(llvm::StringRef Name) { return Name.split('/').first; }
+
+/// Creates the folders above Name inside Dir.
+std::string makeParents(const std::string &Dir, llvm::StringRef Name) {
+  llvm::StringRef Parent = path::parent_path(Name);
+  if (Parent.empty())
+    return "";
+  if (std::error_code EC = fs::create_directories(join(Dir, Parent)))
+    return "cannot create folder '" + join(Dir, Parent) + "': " + EC.message();
+  return "";
+}
+
 /// The files a previous wash run wrote into Dir, if Dir holds its marker.
 std::optional<std::vector<std::string>> readMarker(const std::string &Dir) {
   auto Buffer = llvm::MemoryBuffer::getFile(join(Dir, MarkerName));
@@ -110,14 +126,16 @@ std::string inspect(const std::string &Dir, const std::vector<GeneratedFile> &Fi
            "' file); wash never overwrites files it did not write: choose a new or " +
            "empty folder with -o";
   E.Ours.insert(MarkerName);
-  for (const std::string &Name : *Marker)
+  for (const std::string &Name : *Marker) {
     E.Ours.insert(Name);
+    E.Ours.insert(topEntry(Name));
+  }
   for (std::string &Name : Entries)
     if (!E.Ours.contains(Name))
       E.Theirs.push_back(std::move(Name));
   for (const GeneratedFile &F : Files)
     for (const std::string &Name : E.Theirs)
-      if (F.Name == Name)
+      if (topEntry(F.Name) == Name)
         return "'" + join(Dir, Name) + "' was not written by wash; it is not overwritten";
   return "";
 }
@@ -126,6 +144,8 @@ std::string inspect(const std::string &Dir, const std::vector<GeneratedFile> &Fi
 std::string stage(const std::string &Stage, const std::vector<GeneratedFile> &Files) {
   std::string Marker = std::string(MarkerHeader) + "\n";
   for (const GeneratedFile &F : Files) {
+    if (std::string Error = makeParents(Stage, F.Name); !Error.empty())
+      return Error;
     if (std::string Error = writeFile(join(Stage, F.Name), F.Text); !Error.empty())
       return Error;
     Marker += F.Name + "\n";
@@ -222,19 +242,56 @@ std::string writeInPlace(const std::string &Dir, const std::vector<GeneratedFile
   for (const GeneratedFile &F : Files)
     Order.push_back(F.Name);
   Order.push_back(MarkerName);
-  for (size_t I = 0; Error.empty() && I < Order.size(); ++I)
-    if (std::rename(join(Stage, Order[I]).c_str(), join(Dir, Order[I]).c_str()) != 0)
+  for (size_t I = 0; Error.empty() && I < Order.size(); ++I) {
+    Error = makeParents(Dir, Order[I]);
+    if (Error.empty() &&
+        std::rename(join(Stage, Order[I]).c_str(), join(Dir, Order[I]).c_str()) != 0)
       Error = "cannot move '" + Order[I] + "' into '" + Dir + "': " + errnoMessage();
+  }
   fs::remove_directories(Stage);
   if (!Error.empty())
     return Error;
   for (const auto &Old : E.Ours)
-    if (!New.contains(Old.getKey()))
+    if (!New.contains(Old.getKey()) && !fs::is_directory(join(Dir, Old.getKey())))
       fs::remove(join(Dir, Old.getKey()));
   return "";
 }
 
+/// Name in a depfile: spaces, `#` and `$` escaped as Make and Ninja read them.
+std::string depfileName(llvm::StringRef Name) {
+  llvm::SmallString<256> P(Name);
+  fs::make_absolute(P);
+  path::remove_dots(P, /*remove_dot_dot=*/true);
+  std::string Out;
+  for (char C : P) {
+    if (C == ' ' || C == '#' || C == '\\')
+      Out += '\\';
+    if (C == '$')
+      Out += '$';
+    Out += C;
+  }
+  return Out;
+}
+
 } // namespace
+
+std::string writeDepfile(const std::string &Path, const std::string &Target,
+                         const std::vector<std::string> &Inputs) {
+  std::string Text = depfileName(Target) + ":";
+  for (const std::string &Input : Inputs)
+    Text += " \\\n  " + depfileName(Input);
+  Text += "\n";
+  std::string Temporary = Path + ".wash-" + std::to_string(::getpid());
+  fs::remove(Temporary);
+  if (std::string Error = writeFile(Temporary, Text); !Error.empty())
+    return Error;
+  if (std::rename(Temporary.c_str(), Path.c_str()) != 0) {
+    std::string Error = "cannot write depfile '" + Path + "': " + errnoMessage();
+    fs::remove(Temporary);
+    return Error;
+  }
+  return "";
+}
 
 std::string writeProject(const std::string &Dir, const std::vector<GeneratedFile> &Files) {
   Existing E;

@@ -184,6 +184,7 @@ private:
   void globalWrite(const Stmt *S);
   void particleMethod(const CallExpr *CE, const FunctionDecl *FD);
   void libraryCall(const CallExpr *CE);
+  bool libraryHelperCall(const CallExpr *CE, const FunctionDecl *FD);
   void userCall(const CallExpr *CE, const FunctionDecl *FD);
   void add(Access A) {
     if (Recorded.insert(std::make_tuple(A.Field, A.On, A.How, A.Pos.Line, A.Pos.Col)).second)
@@ -264,7 +265,38 @@ void KernelAnalyser::call(const CallExpr *CE) {
   const FunctionDecl *Def = FD->getDefinition();
   if (isUserCode(Ctx.getSourceManager(), Def ? Def : FD))
     return userCall(CE, FD);
+  if (libraryHelperCall(CE, FD))
+    return;
   libraryCall(CE);
+}
+
+/// A function of a system or library header declared to take a particle
+/// (`double mass(const wash::Particle &)`), given one: wash rewrites only the
+/// user's files, so the generated code would hand it a column handle it
+/// cannot take. Reported at the call. Templates (the standard library's
+/// among them) are left alone: they may well take what the generated code
+/// passes.
+bool KernelAnalyser::libraryHelperCall(const CallExpr *CE, const FunctionDecl *FD) {
+  if (FD->isTemplateInstantiation() || FD->getDescribedFunctionTemplate())
+    return false;
+  if (const auto *MD = dyn_cast<CXXMethodDecl>(FD);
+      MD && MD->getParent()->getTemplateInstantiationPattern())
+    return false;
+  bool Takes = false;
+  for (const ParmVarDecl *P : FD->parameters())
+    Takes |= involvesParticle(P->getType());
+  bool Given = false;
+  for (const Expr *A : CE->arguments())
+    Given |= (roleOf(A) & (RoleOwn | RoleNeighbour | RoleList)) != 0;
+  if (!Takes || !Given)
+    return false;
+  const SourceManager &SM = Ctx.getSourceManager();
+  const FunctionDecl *Where = FD->getDefinition() ? FD->getDefinition() : FD;
+  PresumedLoc P = SM.getPresumedLoc(SM.getExpansionLoc(Where->getLocation()));
+  D.report(DiagId::HelperInLibraryHeader, CE->getBeginLoc(),
+           {FD->getQualifiedNameAsString(), P.isValid() ? P.getFilename() : "?"});
+  D.report(DiagId::NoteDeclaredHere, Where->getLocation(), {FD->getQualifiedNameAsString()});
+  return true;
 }
 
 void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) {

@@ -7,9 +7,12 @@
 #include "clang/Frontend/FrontendAction.h"
 #include "clang/Frontend/TextDiagnosticPrinter.h"
 #include "clang/Lex/Lexer.h"
+#include "clang/Lex/PPCallbacks.h"
+#include "clang/Lex/Preprocessor.h"
 #include "clang/Tooling/ArgumentsAdjusters.h"
 #include "clang/Tooling/CompilationDatabase.h"
 #include "clang/Tooling/Tooling.h"
+#include "llvm/ADT/StringSet.h"
 #include "llvm/Support/FileSystem.h"
 #include "llvm/Support/MemoryBuffer.h"
 #include "llvm/Support/Path.h"
@@ -24,18 +27,34 @@ namespace {
 /// The largest simulation file wash reads.
 constexpr uint64_t MaxSourceBytes = uint64_t(64) << 20;
 
-using Callback = std::function<void(ASTContext &, Diagnoser &, unsigned)>;
+using Callback =
+    std::function<void(ASTContext &, Diagnoser &, unsigned, const IncludeDirectives &)>;
+
+/// Records every include directive the preprocessor reads, skipped ones too.
+class IncludeRecorder : public PPCallbacks {
+public:
+  explicit IncludeRecorder(IncludeDirectives &Out) : Out(Out) {}
+  void InclusionDirective(SourceLocation Hash, const Token &, StringRef, bool,
+                          CharSourceRange FileName, OptionalFileEntryRef File, StringRef, StringRef,
+                          const Module *, bool, SrcMgr::CharacteristicKind FileType) override {
+    Out.push_back({Hash, FileName, File, FileType != SrcMgr::C_User});
+  }
+
+private:
+  IncludeDirectives &Out;
+};
 
 class Consumer : public ASTConsumer {
 public:
   Consumer(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
+  IncludeDirectives Includes;
   void HandleTranslationUnit(ASTContext &Ctx) override {
     // A source clang rejects has only clang's errors: analysing a broken AST
     // would add noise.
     if (Ctx.getDiagnostics().hasErrorOccurred())
       return;
     Diagnoser D(Ctx.getDiagnostics(), Ctx.getSourceManager());
-    OnAST(Ctx, D, Dim);
+    OnAST(Ctx, D, Dim, Includes);
   }
 
 private:
@@ -46,8 +65,10 @@ private:
 class Action : public ASTFrontendAction {
 public:
   Action(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
-  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance &, StringRef) override {
-    return std::make_unique<Consumer>(OnAST, Dim);
+  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance &CI, StringRef) override {
+    auto C = std::make_unique<Consumer>(OnAST, Dim);
+    CI.getPreprocessor().addPPCallbacks(std::make_unique<IncludeRecorder>(C->Includes));
+    return C;
   }
 
 private:
@@ -191,7 +212,25 @@ std::string nestingError(const std::string &File, llvm::StringRef Text) {
   return "";
 }
 
+std::string absolutePath(StringRef Path) {
+  llvm::SmallString<256> P(Path);
+  llvm::sys::fs::make_absolute(P);
+  llvm::sys::path::remove_dots(P, true);
+  return std::string(P);
+}
+
 } // namespace
+
+std::vector<std::string> inputFiles(const std::string &Source, const IncludeDirectives &Includes) {
+  std::vector<std::string> Files = {absolutePath(Source)};
+  llvm::StringSet<> Seen;
+  Seen.insert(Files[0]);
+  for (const IncludeDirective &I : Includes)
+    if (I.File)
+      if (std::string Path = absolutePath(I.File->getName()); Seen.insert(Path).second)
+        Files.push_back(Path);
+  return Files;
+}
 
 bool parseSimulation(const Options &Opts, const Callback &OnAST) {
   if (std::string Reason = unreadableReason(Opts.Source); !Reason.empty()) {

@@ -27,6 +27,9 @@ struct Options {
   std::vector<std::string> CompilerArgs; ///< After `--`.
   Backend Target = Backend::Serial;
   std::string OutputDir = ".";
+  /// --depfile: where to write a Makefile-syntax list of every file the
+  /// translation read, for the build to re-translate when one changes.
+  std::string DepFile;
   bool DumpModel = false;
   /// --dump-after: print the model right after this pass and stop (wins
   /// over DumpModel, which prints it after the last pass).

@@ -4,6 +4,7 @@
 #include "wash/translator/Emit/WriteProject.h"
 #include "wash/translator/Frontend/AstRefs.h"
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/Includes.h"
 #include "wash/translator/Model.h"
 #include "wash/translator/Options.h"
 
@@ -13,10 +14,12 @@
 
 namespace wash::tr {
 
-/// Plans storage, rewrites the user's source and emits the storage header, the
+/// Plans storage, rewrites the user's source (and the user headers Includes
+/// reach, each into the project under user/) and emits the storage header, the
 /// driver and CMakeLists.txt for Opts.Target into Files (nothing is written to
 /// disk here). Returns false after an error.
 bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
-                 const Options &Opts, std::vector<GeneratedFile> &Files);
+                 const IncludeDirectives &Includes, const Options &Opts,
+                 std::vector<GeneratedFile> &Files);
 
 } // namespace wash::tr

@@ -11,12 +11,15 @@
 //  - registration calls become `(void)0`, `wash::start()` the generated
 //    driver, `wash::create_particle` the generated one, and the
 //    `#include <wash/wash.hpp>` the generated storage header.
+// The same holds in every user header the simulation includes (Emit/UserFiles):
+// each is rewritten too, and the includes between them name the copies.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
 
 #include "wash/translator/Emit/CodePlan.h"
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/Includes.h"
 
 #include "clang/AST/ASTContext.h"
 
@@ -26,10 +29,19 @@
 
 namespace wash::tr {
 
-/// The rewritten main file, or nothing after an error (reported through D).
-/// `Variables` gets the names of the variables whose reads were given slots
-/// (CodePlan::Variables).
-std::optional<std::string> rewriteSource(clang::ASTContext &Ctx, const CodePlan &Plan, Diagnoser &D,
-                                         std::vector<std::string> *Variables = nullptr);
+struct RewrittenFile {
+  std::string Original;    ///< The user's file, absolute.
+  std::string ProjectPath; ///< Where its copy goes, relative to the project.
+  std::string Text;        ///< Rewritten, with the original's line numbers.
+};
+
+/// The rewritten main file, then each rewritten header, or nothing after an
+/// error (reported through D). `Variables` gets the names of the variables
+/// whose reads were given slots (CodePlan::Variables).
+std::optional<std::vector<RewrittenFile>> rewriteSource(clang::ASTContext &Ctx,
+                                                        const CodePlan &Plan,
+                                                        const IncludeDirectives &Includes,
+                                                        Diagnoser &D,
+                                                        std::vector<std::string> *Variables = nullptr);
 
 } // namespace wash::tr

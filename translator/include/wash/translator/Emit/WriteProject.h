@@ -18,4 +18,11 @@ struct GeneratedFile {
 /// Returns an error message, or "" on success.
 std::string writeProject(const std::string &Dir, const std::vector<GeneratedFile> &Files);
 
+/// Writes Path (a temporary file, then renamed): the depfile `Target: Inputs`
+/// in Makefile syntax, as compilers write with -MD and as CMake's
+/// add_custom_command(DEPFILE) and Ninja read. Target and Inputs are made
+/// absolute. Returns an error message, or "" on success.
+std::string writeDepfile(const std::string &Path, const std::string &Target,
+                         const std::vector<std::string> &Inputs);
+
 } // namespace wash::tr

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/Includes.h"
 #include "wash/translator/Options.h"
 
 #include "clang/AST/ASTContext.h"
@@ -11,13 +12,14 @@
 namespace wash::tr {
 
 /// Parses Opts.Source with clang and, if it compiles, calls OnAST with the AST
-/// and a Diagnoser on the compiler's DiagnosticsEngine. The command line is
+/// , a Diagnoser on the compiler's DiagnosticsEngine and the include
+/// directives the preprocessor read. The command line is
 /// `-std=c++20`, the resource directory and the wash API headers (as system
 /// headers) baked in at build time, `-DWASH_DIM=<guessDimension>` unless the
 /// user defines it, then the user's flags. Returns false if clang or OnAST
 /// reported an error.
-bool parseSimulation(
-    const Options &Opts,
-    const std::function<void(clang::ASTContext &, Diagnoser &, unsigned Dim)> &OnAST);
+bool parseSimulation(const Options &Opts,
+                     const std::function<void(clang::ASTContext &, Diagnoser &, unsigned Dim,
+                                              const IncludeDirectives &)> &OnAST);
 
 } // namespace wash::tr

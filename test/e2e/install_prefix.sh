@@ -1,0 +1,35 @@
+# wash installed to a prefix is usable as README.md says: a user project with
+# headers of its own (the multi_file scene) finds it through
+# CMAKE_PREFIX_PATH, is translated by the installed wash and its API headers
+# (not this build tree), and computes the same dump as its reference build;
+# wash_DIR=<prefix>/lib/cmake/wash finds it too.
+. "$(dirname "$0")/lib.sh"
+build_dir=$1 scene_dir=$2
+
+expect_exit 0 cmake --install "$build_dir" --prefix "$work/prefix"
+[ -x prefix/bin/wash ] || fail "no wash in the installed prefix"
+[ -f prefix/include/wash/wash.hpp ] || fail "no wash/wash.hpp in the installed prefix"
+[ -f prefix/lib/cmake/wash/washConfig.cmake ] || fail "no washConfig.cmake in the installed prefix"
+
+cp -r "$scene_dir" src
+cat > src/CMakeLists.txt <<'CMAKE'
+cmake_minimum_required(VERSION 3.20)
+project(installed_wash LANGUAGES CXX)
+find_package(wash REQUIRED CONFIG)
+wash_add_simulation(sim SOURCE multi_file.cpp BACKEND serial INCLUDE_DIRECTORIES include)
+wash_add_reference(sim-reference SOURCE multi_file.cpp DIM 2 INCLUDE_DIRECTORIES include)
+CMAKE
+
+expect_exit 0 cmake -S src -B bld -G Ninja -DCMAKE_PREFIX_PATH="$work/prefix"
+grep -qF "$work/prefix/bin/wash" bld/build.ninja || fail "the project does not translate with the installed wash"
+expect_exit 0 cmake --build bld
+grep -qF "$build_dir" bld/sim.wash/multi_file.serial.cpp bld/sim.wash/user/scene/walls.hpp &&
+  fail "the installed wash generated code that names its build tree"
+expect_exit 0 bld/sim-reference --steps 50 --quiet --dump reference.csv --out ref
+expect_exit 0 bld/sim --steps 50 --quiet --dump serial.csv --out ser
+cmp -s reference.csv serial.csv || fail "the installed wash's program differs from the reference: $(cmp reference.csv serial.csv)"
+
+# wash_DIR names the package folder itself.
+expect_exit 0 cmake -S src -B bld2 -G Ninja -Dwash_DIR="$work/prefix/lib/cmake/wash"
+grep -qF "$work/prefix/bin/wash" bld2/build.ninja || fail "wash_DIR did not select the installed wash"
+echo "installed wash: a project with its own headers builds against the prefix and matches its reference"
