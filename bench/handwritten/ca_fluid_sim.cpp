@@ -709,7 +709,7 @@ void forceAndUpdate(Particles &P, const Grid &G, const Scene &scene) {
   }
 }
 
-/// The state as the reference's Frame: id, pos, vel, density, mass,
+/// The state as the reference's Frame: id, pos, vel, acc, density, mass,
 /// smoothing_length, then nearDensity, predictedPosition, pressure (add_force
 /// order), then position, viscosity (created on first use, by name). Rows in id
 /// order, as the reference stores them, so that VTK frames (written in row
@@ -737,6 +737,8 @@ Frame makeFrame(const Particles &P, bool viscosityCreated) {
   };
   vec("pos", P.px, P.py);
   vec("vel", P.vx, P.vy);
+  // The seed never sets acc: zeros, in frames only, as the reference writes.
+  f.columns.push_back(Column{"acc", 2, std::vector<double>(2 * n, 0.0), /*inDump=*/false});
   scalar("density", P.rho);
   f.columns.push_back(Column{"mass", 1, std::vector<double>(n, 1.0)});
   f.columns.push_back(Column{"smoothing_length", 1, std::vector<double>(n, smoothingRadius)});
@@ -841,7 +843,7 @@ int run(int argc, char **argv) {
                   omp_get_max_threads(), boxScale);
     std::fflush(stdout);
     if (output.frameDue(0, steps))
-      output.writeFrame(0, makeFrame(P, false));
+      output.writeFrame(0, makeFrame(P, false), /*time=*/0.0);
     auto t0 = std::chrono::steady_clock::now();
     for (std::uint64_t step = 1; step <= steps; ++step) {
       if (!velocityUpdateAndReorder(P, G, step))
@@ -849,7 +851,7 @@ int run(int argc, char **argv) {
       calculateDensity(P, G);
       forceAndUpdate(P, G, scene);
       if (output.frameDue(step, steps))
-        output.writeFrame(step, makeFrame(P, true));
+        output.writeFrame(step, makeFrame(P, true), /*time=*/0.0);
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     Frame last = makeFrame(P, steps > 0);
