@@ -40,6 +40,26 @@
 // HERE-NEXT: output-folder.openmp.cpp
 // HERE-NEXT: output-folder.wash.hpp
 // HERE-NOT: {{.}}
+//
+// A project written before wash wrote its marker is known by the banner atop
+// its files: it is replaced, and its build folder stays.
+// RUN: %wash --backend=serial -o %t/old %s 2>/dev/null && rm %t/old/.wash-project
+// RUN: mkdir %t/old/build && echo mine > %t/old/build/notes.txt
+// RUN: %wash --backend=openmp -o %t/old %s 2>/dev/null
+// RUN: ls -A %t/old | FileCheck %s --check-prefix=UNMARKED
+// UNMARKED: .wash-project
+// UNMARKED-NEXT: CMakeLists.txt
+// UNMARKED-NEXT: build
+// UNMARKED-NEXT: output-folder.openmp.cpp
+// UNMARKED-NEXT: output-folder.wash.hpp
+// UNMARKED-NOT: {{.}}
+// RUN: grep -qx mine %t/old/build/notes.txt
+// There too a file without the banner is the user's.
+// RUN: %wash --backend=serial -o %t/old2 %s 2>/dev/null && rm %t/old2/.wash-project
+// RUN: echo mine > %t/old2/output-folder.wash.hpp
+// RUN: %expect_exit 1 %wash --backend=serial -o %t/old2 %s 2>&1 | FileCheck %s --check-prefix=UNBANNERED
+// UNBANNERED: wash: error: '{{.*}}old2/output-folder.wash.hpp' was not written by wash; it is not overwritten
+// RUN: grep -qx mine %t/old2/output-folder.wash.hpp
 #include <wash/wash.hpp>
 
 void Heat(wash::Particle& p) { p.set_density(p.get_density() * 2.0); }
