@@ -10,9 +10,9 @@
 namespace wash::sph {
 
 /// m v^2 / 2.
-inline double kinetic_energy(const wash::Particle& p) {
-    wash::ParticleVec v = p.get_vel();
-    return p.get_mass() * 0.5 * v.dot(v);
+inline double kinetic_energy(const wash::Particle &p) {
+  wash::ParticleVec v = p.get_vel();
+  return p.get_mass() * 0.5 * v.dot(v);
 }
 
 } // namespace wash::sph

@@ -19,27 +19,33 @@
 namespace wash::sph {
 
 /// grad_i W for the separation d = x_i - x_j of length r > 0.
-template <typename V> V gradient(const V& d, double r, double dWdr) { return d * (dWdr / r); }
+template <typename V> V gradient(const V &d, double r, double dWdr) { return d * (dWdr / r); }
 
 /// Cubic B-spline M4 (Monaghan & Lattanzio 1985), support 2h.
 namespace cubic_spline {
 inline constexpr double support = 2.0;
 template <int D = wash::dimensions> double sigma(double h) {
-    static_assert(D == 2 || D == 3);
-    if constexpr (D == 2) return 10.0 / (7.0 * PI * h * h);
-    else return 1.0 / (PI * h * h * h);
+  static_assert(D == 2 || D == 3);
+  if constexpr (D == 2)
+    return 10.0 / (7.0 * PI * h * h);
+  else
+    return 1.0 / (PI * h * h * h);
 }
 template <int D = wash::dimensions> double W(double r, double h) {
-    double q = r / h, s = sigma<D>(h);
-    if (q < 1.0) return s * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-    if (q < 2.0) return s * 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
-    return 0.0;
+  double q = r / h, s = sigma<D>(h);
+  if (q < 1.0)
+    return s * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
+  if (q < 2.0)
+    return s * 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
+  return 0.0;
 }
 template <int D = wash::dimensions> double dWdr(double r, double h) {
-    double q = r / h, s = sigma<D>(h);
-    if (q < 1.0) return s / h * (-3.0 * q + 2.25 * q * q);
-    if (q < 2.0) return s / h * (-0.75 * (2.0 - q) * (2.0 - q));
-    return 0.0;
+  double q = r / h, s = sigma<D>(h);
+  if (q < 1.0)
+    return s / h * (-3.0 * q + 2.25 * q * q);
+  if (q < 2.0)
+    return s / h * (-0.75 * (2.0 - q) * (2.0 - q));
+  return 0.0;
 }
 } // namespace cubic_spline
 
@@ -47,26 +53,34 @@ template <int D = wash::dimensions> double dWdr(double r, double h) {
 namespace quintic_spline {
 inline constexpr double support = 3.0;
 template <int D = wash::dimensions> double sigma(double h) {
-    static_assert(D == 2 || D == 3);
-    if constexpr (D == 2) return 7.0 / (478.0 * PI * h * h);
-    else return 1.0 / (120.0 * PI * h * h * h);
+  static_assert(D == 2 || D == 3);
+  if constexpr (D == 2)
+    return 7.0 / (478.0 * PI * h * h);
+  else
+    return 1.0 / (120.0 * PI * h * h * h);
 }
 inline double pow4(double x) { return x * x * x * x; }
 template <int D = wash::dimensions> double W(double r, double h) {
-    double q = r / h, a = 3.0 - q, b = 2.0 - q, c = 1.0 - q, w = 0.0;
-    if (q >= 3.0) return 0.0;
-    w = a * pow4(a);
-    if (q < 2.0) w -= 6.0 * b * pow4(b);
-    if (q < 1.0) w += 15.0 * c * pow4(c);
-    return sigma<D>(h) * w;
+  double q = r / h, a = 3.0 - q, b = 2.0 - q, c = 1.0 - q, w = 0.0;
+  if (q >= 3.0)
+    return 0.0;
+  w = a * pow4(a);
+  if (q < 2.0)
+    w -= 6.0 * b * pow4(b);
+  if (q < 1.0)
+    w += 15.0 * c * pow4(c);
+  return sigma<D>(h) * w;
 }
 template <int D = wash::dimensions> double dWdr(double r, double h) {
-    double q = r / h, a = 3.0 - q, b = 2.0 - q, c = 1.0 - q, w = 0.0;
-    if (q >= 3.0) return 0.0;
-    w = -5.0 * pow4(a);
-    if (q < 2.0) w += 30.0 * pow4(b);
-    if (q < 1.0) w -= 75.0 * pow4(c);
-    return sigma<D>(h) / h * w;
+  double q = r / h, a = 3.0 - q, b = 2.0 - q, c = 1.0 - q, w = 0.0;
+  if (q >= 3.0)
+    return 0.0;
+  w = -5.0 * pow4(a);
+  if (q < 2.0)
+    w += 30.0 * pow4(b);
+  if (q < 1.0)
+    w -= 75.0 * pow4(c);
+  return sigma<D>(h) / h * w;
 }
 } // namespace quintic_spline
 
@@ -75,20 +89,26 @@ template <int D = wash::dimensions> double dWdr(double r, double h) {
 namespace wendland_c2 {
 inline constexpr double support = 2.0;
 template <int D = wash::dimensions> double W(double r, double h) {
-    static_assert(D == 2 || D == 3);
-    double q = r / h;
-    if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q;
-    if constexpr (D == 2) return 7.0 / (4.0 * PI * h * h) * s * s * s * s * (1.0 + 2.0 * q);
-    else return 21.0 / (16.0 * PI * h * h * h) * s * s * s * s * (1.0 + 2.0 * q);
+  static_assert(D == 2 || D == 3);
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q;
+  if constexpr (D == 2)
+    return 7.0 / (4.0 * PI * h * h) * s * s * s * s * (1.0 + 2.0 * q);
+  else
+    return 21.0 / (16.0 * PI * h * h * h) * s * s * s * s * (1.0 + 2.0 * q);
 }
 template <int D = wash::dimensions> double dWdr(double r, double h) {
-    static_assert(D == 2 || D == 3);
-    double q = r / h;
-    if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q;
-    if constexpr (D == 2) return -35.0 / (4.0 * PI * h * h * h) * q * s * s * s;
-    else return -105.0 / (16.0 * PI * h * h * h * h) * q * s * s * s;
+  static_assert(D == 2 || D == 3);
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q;
+  if constexpr (D == 2)
+    return -35.0 / (4.0 * PI * h * h * h) * q * s * s * s;
+  else
+    return -105.0 / (16.0 * PI * h * h * h * h) * q * s * s * s;
 }
 } // namespace wendland_c2
 
@@ -96,21 +116,25 @@ template <int D = wash::dimensions> double dWdr(double r, double h) {
 namespace wendland_c4 {
 inline constexpr double support = 2.0;
 template <int D = wash::dimensions> double sigma(double h) {
-    static_assert(D == 2 || D == 3);
-    if constexpr (D == 2) return 9.0 / (4.0 * PI * h * h);
-    else return 495.0 / (256.0 * PI * h * h * h);
+  static_assert(D == 2 || D == 3);
+  if constexpr (D == 2)
+    return 9.0 / (4.0 * PI * h * h);
+  else
+    return 495.0 / (256.0 * PI * h * h * h);
 }
 template <int D = wash::dimensions> double W(double r, double h) {
-    double q = r / h;
-    if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q, s2 = s * s;
-    return sigma<D>(h) * s2 * s2 * s2 * (1.0 + 3.0 * q + 35.0 / 12.0 * q * q);
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q, s2 = s * s;
+  return sigma<D>(h) * s2 * s2 * s2 * (1.0 + 3.0 * q + 35.0 / 12.0 * q * q);
 }
 template <int D = wash::dimensions> double dWdr(double r, double h) {
-    double q = r / h;
-    if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q, s2 = s * s;
-    return sigma<D>(h) / h * (-14.0 / 3.0) * q * (1.0 + 2.5 * q) * s2 * s2 * s;
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q, s2 = s * s;
+  return sigma<D>(h) / h * (-14.0 / 3.0) * q * (1.0 + 2.5 * q) * s2 * s2 * s;
 }
 } // namespace wendland_c4
 
@@ -118,21 +142,25 @@ template <int D = wash::dimensions> double dWdr(double r, double h) {
 namespace wendland_c6 {
 inline constexpr double support = 2.0;
 template <int D = wash::dimensions> double sigma(double h) {
-    static_assert(D == 2 || D == 3);
-    if constexpr (D == 2) return 39.0 / (14.0 * PI * h * h);
-    else return 1365.0 / (512.0 * PI * h * h * h);
+  static_assert(D == 2 || D == 3);
+  if constexpr (D == 2)
+    return 39.0 / (14.0 * PI * h * h);
+  else
+    return 1365.0 / (512.0 * PI * h * h * h);
 }
 template <int D = wash::dimensions> double W(double r, double h) {
-    double q = r / h;
-    if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q, s4 = s * s * s * s;
-    return sigma<D>(h) * s4 * s4 * (1.0 + 4.0 * q + 6.25 * q * q + 4.0 * q * q * q);
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q, s4 = s * s * s * s;
+  return sigma<D>(h) * s4 * s4 * (1.0 + 4.0 * q + 6.25 * q * q + 4.0 * q * q * q);
 }
 template <int D = wash::dimensions> double dWdr(double r, double h) {
-    double q = r / h;
-    if (q >= 2.0) return 0.0;
-    double s = 1.0 - 0.5 * q, s4 = s * s * s * s;
-    return sigma<D>(h) / h * (-5.5) * q * (1.0 + 3.5 * q + 4.0 * q * q) * s4 * s * s * s;
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q, s4 = s * s * s * s;
+  return sigma<D>(h) / h * (-5.5) * q * (1.0 + 3.5 * q + 4.0 * q * q) * s4 * s * s * s;
 }
 } // namespace wendland_c6
 
@@ -141,20 +169,23 @@ template <int D = wash::dimensions> double dWdr(double r, double h) {
 namespace gaussian {
 inline constexpr double support = 3.0;
 template <int D = wash::dimensions> double sigma(double h) {
-    static_assert(D == 2 || D == 3);
-    if constexpr (D == 2) return 1.0 / (PI * h * h * (1.0 - std::exp(-9.0)));
-    else
-        return 1.0 / (h * h * h * (std::pow(PI, 1.5) * std::erf(3.0) - 6.0 * PI * std::exp(-9.0)));
+  static_assert(D == 2 || D == 3);
+  if constexpr (D == 2)
+    return 1.0 / (PI * h * h * (1.0 - std::exp(-9.0)));
+  else
+    return 1.0 / (h * h * h * (std::pow(PI, 1.5) * std::erf(3.0) - 6.0 * PI * std::exp(-9.0)));
 }
 template <int D = wash::dimensions> double W(double r, double h) {
-    double q = r / h;
-    if (q >= 3.0) return 0.0;
-    return sigma<D>(h) * std::exp(-q * q);
+  double q = r / h;
+  if (q >= 3.0)
+    return 0.0;
+  return sigma<D>(h) * std::exp(-q * q);
 }
 template <int D = wash::dimensions> double dWdr(double r, double h) {
-    double q = r / h;
-    if (q >= 3.0) return 0.0;
-    return sigma<D>(h) / h * (-2.0 * q) * std::exp(-q * q);
+  double q = r / h;
+  if (q >= 3.0)
+    return 0.0;
+  return sigma<D>(h) / h * (-2.0 * q) * std::exp(-q * q);
 }
 } // namespace gaussian
 

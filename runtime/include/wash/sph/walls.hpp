@@ -17,28 +17,26 @@
 namespace wash::sph {
 
 template <int D = wash::dimensions> struct AdamiWall {
-    using V = Vec<double, D>;
-    double weight = 0.0;   ///< sum_f W_wf
-    double pressure_sum = 0.0;
-    V density_moment{};    ///< sum_f rho_f (x_w - x_f) W_wf
-    V velocity_sum{};      ///< sum_f v_f W_wf
+  using V = Vec<double, D>;
+  double weight = 0.0; ///< sum_f W_wf
+  double pressure_sum = 0.0;
+  V density_moment{}; ///< sum_f rho_f (x_w - x_f) W_wf
+  V velocity_sum{};   ///< sum_f v_f W_wf
 
-    /// One fluid neighbour f at d = x_w - x_f with kernel value W.
-    void add(double W, double pressure, double density, const V& d, const V& vel) {
-        weight += W;
-        pressure_sum += pressure * W;
-        density_moment += d * (density * W);
-        velocity_sum += vel * W;
-    }
-    bool empty() const { return weight <= 0.0; }
-    /// The wall's pressure, for gravity g and the wall's own acceleration aw.
-    double pressure(const V& g, const V& aw = V{}) const {
-        return empty() ? 0.0 : (pressure_sum + (g - aw).dot(density_moment)) / weight;
-    }
-    /// The no-slip velocity v~_w of a wall moving at vw.
-    V velocity(const V& vw = V{}) const {
-        return empty() ? vw : vw * 2.0 - velocity_sum / weight;
-    }
+  /// One fluid neighbour f at d = x_w - x_f with kernel value W.
+  void add(double W, double pressure, double density, const V &d, const V &vel) {
+    weight += W;
+    pressure_sum += pressure * W;
+    density_moment += d * (density * W);
+    velocity_sum += vel * W;
+  }
+  bool empty() const { return weight <= 0.0; }
+  /// The wall's pressure, for gravity g and the wall's own acceleration aw.
+  double pressure(const V &g, const V &aw = V{}) const {
+    return empty() ? 0.0 : (pressure_sum + (g - aw).dot(density_moment)) / weight;
+  }
+  /// The no-slip velocity v~_w of a wall moving at vw.
+  V velocity(const V &vw = V{}) const { return empty() ? vw : vw * 2.0 - velocity_sum / weight; }
 };
 
 } // namespace wash::sph
