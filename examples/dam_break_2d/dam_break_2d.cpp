@@ -12,7 +12,8 @@
 // t sqrt(2g/L) = 3.2 (t = 0.72 s); validate.sh plots the surge front against
 // the experiments. See README.md.
 //
-//   dam_break_2d [n]   n particles across the column (default 20; dx = L / n)
+//   dam_break_2d [n [w]]   n particles across the column (default 20; dx = L / n),
+//                          a tank w L wide (default 4; w = 1: a column at rest)
 #include <wash/wash.hpp>
 #include <wash/sph/dissipation.hpp>
 #include <wash/sph/eos.hpp>
@@ -32,12 +33,12 @@ namespace sph = wash::sph;
 constexpr int defaultColumn = 20;
 constexpr double L = 1.0;             // column width
 constexpr double H = 2.0 * L;         // column height
-constexpr double tankWidth = 4.0 * L;
+constexpr double defaultTankWidth = 4.0 * L;
 constexpr double tankHeight = 3.0 * L;
-constexpr int wallLayers = 3;         // 3 dx > the support 2h = 2.6 dx
+constexpr int wallLayers = 3;         // 3 dx: the support 2h
 constexpr double g = 9.81;
 constexpr double rho0 = 1000.0;
-constexpr double hFactor = 1.3;       // h = hFactor dx
+constexpr double hFactor = 1.5;       // h = hFactor dx
 constexpr double alphaAV = 0.1;       // Monaghan viscosity (beta = 0)
 constexpr double deltaSph = 0.1;      // Molteni-Colagrossi density diffusion
 constexpr double courant = 0.25;
@@ -60,7 +61,7 @@ void Spawn() {
                                                       wash::Vec2D{(i + 0.5) * dx, y}, wash::Vec2D{});
             p.set_force_scalar("pressure", pressure);
         }
-    for (const wash::Vec2D& pos : WallPositions(tankWidth, tankHeight, dx, wallLayers)) {
+    for (const wash::Vec2D& pos : WallPositions(wash::get_variable("tank_width"), tankHeight, dx, wallLayers)) {
         wash::Particle& p = wash::create_particle(rho0, mass, h, pos, wash::Vec2D{});
         p.set_force_scalar("wall", 1.0);
     }
@@ -164,10 +165,13 @@ void Report() {
 int main(int argc, char** argv) {
     int column = argc > 1 ? std::atoi(argv[1]) : defaultColumn;
     if (column < 4) column = defaultColumn;
+    double tankWidth = argc > 2 ? std::atof(argv[2]) * L : defaultTankWidth;
+    if (!(tankWidth >= L)) tankWidth = defaultTankWidth;
     wash::set_precision("double");
     wash::set_influence_radius(sph::wendland_c2::support * hFactor * L / column);
     wash::set_simulation_name("dam_break_2d");
     wash::add_variable("column", column);
+    wash::add_variable("tank_width", tankWidth);
     wash::add_variable("front", 0.0);
     wash::add_variable("next_report", 0.0);
     wash::add_force("wall", 1);
