@@ -3,7 +3,7 @@
 //
 // A column L = 1 wide and 2L high stands at rest at the left of a tank 4L wide
 // and 3L high, g = 9.81. Weakly compressible SPH built from wash/sph: Wendland
-// C2 kernel (support 2h, h = 1.3 dx), the continuity equation with delta-SPH
+// C2 kernel (support 2h, h = 1.5 dx), the continuity equation with delta-SPH
 // density diffusion (Molteni & Colagrossi 2009), Tait's equation of state with
 // c0 = 10 sqrt(2 g H), Monaghan (1992) artificial viscosity, fixed wall
 // particles with the Adami, Hu & Adams (2012) boundary (scene/walls.hpp),
@@ -57,11 +57,12 @@ void Spawn() {
     for (int j = 0; j < ny; j++)
         for (int i = 0; i < nx; i++) { // the column, in hydrostatic equilibrium
             const double y = (j + 0.5) * dx, pressure = rho0 * g * (H - y);
-            wash::Particle& p = wash::create_particle(eos.density(pressure), mass, h,
-                                                      wash::Vec2D{(i + 0.5) * dx, y}, wash::Vec2D{});
+            const wash::Vec2D pos{(i + 0.5) * dx, y};
+            wash::Particle& p = wash::create_particle(eos.density(pressure), mass, h, pos, wash::Vec2D{});
             p.set_force_scalar("pressure", pressure);
         }
-    for (const wash::Vec2D& pos : WallPositions(wash::get_variable("tank_width"), tankHeight, dx, wallLayers)) {
+    const double width = wash::get_variable("tank_width");
+    for (const wash::Vec2D& pos : WallPositions(width, tankHeight, dx, wallLayers)) {
         wash::Particle& p = wash::create_particle(rho0, mass, h, pos, wash::Vec2D{});
         p.set_force_scalar("wall", 1.0);
     }
@@ -90,7 +91,8 @@ void Kick(wash::Particle& p) {
     if (IsWall(p)) return;
     const double dt = wash::get_time_step();
     p.set_vel(p.get_force_vector("vel_half") + p.get_acc() * (0.5 * dt));
-    const double rho = p.get_force_scalar("density_half") + p.get_force_scalar("density_rate") * (0.5 * dt);
+    const double rho =
+        p.get_force_scalar("density_half") + p.get_force_scalar("density_rate") * (0.5 * dt);
     p.set_density(rho);
     p.set_force_scalar("pressure", Water().pressure(rho));
 }
