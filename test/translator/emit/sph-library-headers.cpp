@@ -24,7 +24,7 @@
 
 // DIAG: #line 1 "{{.*}}/wash/sph/diagnostics.hpp"
 // DIAG: #include "../../../sph-library-headers.wash.hpp"
-// DIAG: inline double kinetic_energy(const auto& p) {
+// DIAG: inline double kinetic_energy(const auto &p) {
 // DIAG-NEXT: wash::ParticleVec v = wash_gen::P.vel[p];
 // DIAG-NEXT: return wash_gen::P.mass[p] * 0.5 * v.dot(v);
 
