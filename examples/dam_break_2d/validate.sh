@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # validate.sh [n]: build the dam_break_2d example, run it with n particles
-# across the column (default 40: 4,418 particles, about a minute on two
-# cores) to T = t sqrt(2g/L) = 3.2, and score its surge front against Martin &
+# across the column (default 40: 4,418 particles, about 40 s of CPU, 1-3
+# minutes on two shared cores) to T = t sqrt(2g/L) = 3.2, and score its surge front against Martin &
 # Moyce (1952) and Koshizuka & Oka (1996) with front.py: the mean relative
 # error over T <= 3 (standard inviscid WCSPH runs 5-10 % ahead of the data;
 # the target is +12 % at most against Martin & Moyce).
