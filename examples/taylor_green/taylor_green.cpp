@@ -7,6 +7,8 @@
 // found across the faces. The vortex's kinetic energy decays as
 // exp(-16 pi^2 nu t) for a unit box.
 #include <wash/wash.hpp>
+#include <wash/sph/eos.hpp>
+#include <wash/sph/kernels.hpp>
 
 #include <cmath>
 #include <vector>
@@ -20,19 +22,10 @@ constexpr double soundSpeed = 10.0;
 constexpr double nu = 0.01;
 constexpr double dt = 0.1 * h / soundSpeed;
 
-double W(double r) {
-    double q = r / h, sigma = 10.0 / (7.0 * PI * h * h);
-    if (q < 1.0) return sigma * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-    if (q < 2.0) return sigma * 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
-    return 0.0;
-}
-
-double dW(double r) { // dW/dr
-    double q = r / h, sigma = 10.0 / (7.0 * PI * h * h);
-    if (q < 1.0) return sigma / h * (-3.0 * q + 2.25 * q * q);
-    if (q < 2.0) return sigma / h * (-0.75 * (2.0 - q) * (2.0 - q));
-    return 0.0;
-}
+// The cubic spline (support 2h) and the linear equation of state of wash/sph.
+double W(double r) { return wash::sph::cubic_spline::W<2>(r, h); }
+double dW(double r) { return wash::sph::cubic_spline::dWdr<2>(r, h); } // dW/dr
+constexpr wash::sph::LinearEos eos{rho0, soundSpeed};
 
 void Spawn() {
     for (int j = 0; j < side; j++)
@@ -49,7 +42,7 @@ void Density(wash::Particle& p, const std::vector<wash::Particle>& ns) {
     for (const auto& n : ns)
         rho += n.get_mass() * W((p.get_pos() - n.get_pos()).magnitude());
     p.set_density(rho);
-    p.set_force_scalar("pressure", soundSpeed * soundSpeed * (rho - rho0));
+    p.set_force_scalar("pressure", eos.pressure(rho));
 }
 
 void Forces(wash::Particle& p, const std::vector<wash::Particle>& ns) {

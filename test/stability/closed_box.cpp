@@ -29,11 +29,18 @@
 //   closed_box [dt_factor]   multiply the time step by dt_factor (default 1);
 //                            a large factor makes the run blow up on purpose.
 #include <wash/wash.hpp>
+#include <wash/sph/diagnostics.hpp>
+#include <wash/sph/dissipation.hpp>
+#include <wash/sph/eos.hpp>
+#include <wash/sph/kernels.hpp>
+#include <wash/sph/leapfrog.hpp>
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
+
+namespace sph = wash::sph;
 
 constexpr int side = 32; // side x side particles
 constexpr double spacing = 1.0 / side;
@@ -52,19 +59,8 @@ constexpr double betaAV = 2.0;
 // speed at most about 0.8, so 2 leaves room for the heating of the shocks).
 constexpr double baseTimeStep = 0.25 * h / 2.0;
 
-double W(double r) {
-    double q = r / h, sigma = 10.0 / (7.0 * PI * h * h);
-    if (q < 1.0) return sigma * (1.0 - 1.5 * q * q + 0.75 * q * q * q);
-    if (q < 2.0) return sigma * 0.25 * (2.0 - q) * (2.0 - q) * (2.0 - q);
-    return 0.0;
-}
-
-double dW(double r) { // dW/dr
-    double q = r / h, sigma = 10.0 / (7.0 * PI * h * h);
-    if (q < 1.0) return sigma / h * (-3.0 * q + 2.25 * q * q);
-    if (q < 2.0) return sigma / h * (-0.75 * (2.0 - q) * (2.0 - q));
-    return 0.0;
-}
+double W(double r) { return sph::cubic_spline::W<2>(r, h); }
+double dW(double r) { return sph::cubic_spline::dWdr<2>(r, h); } // dW/dr
 
 void Spawn() {
     const double mass = rho0 * spacing * spacing;
@@ -78,19 +74,8 @@ void Spawn() {
         }
 }
 
-// First half kick and drift. vel and energy become the values predicted for
-// the end of the step, which the force kernels see; the half-step values wait
-// in vel_half and energy_half for the second kick.
-void KickDrift(wash::Particle& p) {
-    const double dt = wash::get_variable("dt");
-    wash::Vec2D velHalf = p.get_vel() + p.get_acc() * (0.5 * dt);
-    double energyHalf = p.get_force_scalar("energy") + p.get_force_scalar("energy_rate") * (0.5 * dt);
-    p.set_pos(p.get_pos() + velHalf * dt);
-    p.set_force_vector("vel_half", velHalf);
-    p.set_force_scalar("energy_half", energyHalf);
-    p.set_vel(velHalf + p.get_acc() * (0.5 * dt));
-    p.set_force_scalar("energy", energyHalf + p.get_force_scalar("energy_rate") * (0.5 * dt));
-}
+// Kick-drift-kick leapfrog: the first half kick and the drift.
+void KickDrift(wash::Particle& p) { sph::leapfrog_kick_drift(p, wash::get_variable("dt")); }
 
 // Summation density, then pressure and sound speed from the ideal gas law. A
 // negative internal energy (what too large a step leads to) gives a NaN
@@ -101,8 +86,9 @@ void Density(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
         rho += n.get_mass() * W((p.get_pos() - n.get_pos()).magnitude());
     const double energy = p.get_force_scalar("energy");
     p.set_density(rho);
-    p.set_force_scalar("pressure", (adiabaticIndex - 1.0) * rho * energy);
-    p.set_force_scalar("sound_speed", std::sqrt(adiabaticIndex * (adiabaticIndex - 1.0) * energy));
+    p.set_force_scalar("pressure", sph::ideal_gas_pressure(adiabaticIndex, rho, energy));
+    p.set_force_scalar("sound_speed",
+                       sph::ideal_gas_sound_speed_from_energy(adiabaticIndex, energy));
 }
 
 // Pressure and viscous accelerations and du/dt. For the pair (i, j) both sides
@@ -119,38 +105,30 @@ void Forces(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
         if (r <= 0.0) continue;
         const double rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
         const double cj = n.get_force_scalar("sound_speed");
-        wash::Vec2D gradW = d * (dW(r) / r);
+        wash::Vec2D gradW = sph::gradient(d, r, dW(r));
         wash::Vec2D dv = vel - n.get_vel();
         double vr = dv.dot(d), viscosity = 0.0;
         if (vr < 0.0) {
-            double mu = h * vr / (r * r + 0.01 * h * h);
-            viscosity = (-alphaAV * 0.5 * (ci + cj) * mu + betaAV * mu * mu) / (0.5 * (rhoi + rhoj));
+            double mu = sph::monaghan_mu(h, vr, r);
+            viscosity = sph::monaghan_viscosity(alphaAV, betaAV, ci, cj, mu, 0.5 * (rhoi + rhoj));
         }
         const double m = n.get_mass();
-        acc -= gradW * (m * (Pi / (rhoi * rhoi) + Pj / (rhoj * rhoj) + viscosity));
-        energyRate += m * (Pi / (rhoi * rhoi) + 0.5 * viscosity) * dv.dot(gradW);
+        acc -= gradW * sph::momentum_factor(m, Pi, rhoi, Pj, rhoj, viscosity);
+        energyRate += sph::energy_factor(m, Pi, rhoi, viscosity) * dv.dot(gradW);
     }
     p.set_acc(acc);
     p.set_force_scalar("energy_rate", energyRate);
 }
 
 // Second half kick: the state at the end of the step.
-void Kick(wash::Particle& p) {
-    const double dt = wash::get_variable("dt");
-    p.set_vel(p.get_force_vector("vel_half") + p.get_acc() * (0.5 * dt));
-    p.set_force_scalar("energy",
-                       p.get_force_scalar("energy_half") + p.get_force_scalar("energy_rate") * (0.5 * dt));
-}
+void Kick(wash::Particle& p) { sph::leapfrog_kick(p, wash::get_variable("dt")); }
 
 double TotalEnergy(const wash::Particle& p) {
     wash::Vec2D v = p.get_vel();
     return p.get_mass() * (0.5 * v.dot(v) + p.get_force_scalar("energy"));
 }
 
-double KineticEnergy(const wash::Particle& p) {
-    wash::Vec2D v = p.get_vel();
-    return p.get_mass() * 0.5 * v.dot(v);
-}
+double KineticEnergy(const wash::Particle& p) { return sph::kinetic_energy(p); }
 
 double MomentumX(const wash::Particle& p) { return p.get_mass() * p.get_vel().at(0); }
 double MomentumY(const wash::Particle& p) { return p.get_mass() * p.get_vel().at(1); }

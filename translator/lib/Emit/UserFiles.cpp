@@ -30,6 +30,19 @@ std::string commonFolder(llvm::StringRef A, llvm::StringRef B) {
   return Out;
 }
 
+/// For a header of wash's SPH library (<dir>/wash/sph/..., next to
+/// <dir>/wash/wash.hpp), its path from <dir>: "wash/sph/kernels.hpp".
+std::string libraryPath(llvm::StringRef Name) {
+  size_t At = Name.rfind("/wash/sph/");
+  if (At == llvm::StringRef::npos)
+    return "";
+  llvm::SmallString<256> Api(Name.substr(0, At));
+  path::append(Api, "wash", "wash.hpp");
+  if (!llvm::sys::fs::exists(Api))
+    return "";
+  return Name.substr(At + 1).str();
+}
+
 } // namespace
 
 UserFiles::UserFiles(const SourceManager &SM, const IncludeDirectives &Includes,
@@ -50,12 +63,19 @@ UserFiles::UserFiles(const SourceManager &SM, const IncludeDirectives &Includes,
     Original[F] = absolute(I.File->getName());
     Order.push_back(F);
   }
-  if (Order.size() == 1)
-    return;
+  // wash's SPH library goes to user/wash/sph/, the user's own headers to
+  // user/ under the deepest folder holding them all and the simulation.
   std::string Root = path::parent_path(Original[Main]).str();
-  for (FileID F : Order)
-    Root = commonFolder(Root, path::parent_path(Original[F]));
   for (size_t K = 1; K < Order.size(); ++K) {
+    std::string Library = libraryPath(Original[Order[K]]);
+    if (!Library.empty())
+      Path[Order[K]] = "user/" + Library;
+    else
+      Root = commonFolder(Root, path::parent_path(Original[Order[K]]));
+  }
+  for (size_t K = 1; K < Order.size(); ++K) {
+    if (Path.count(Order[K]))
+      continue;
     llvm::StringRef Relative = Original[Order[K]];
     Relative.consume_front(Root);
     Relative = Relative.ltrim('/');

@@ -256,7 +256,10 @@ bool parseSimulation(const Options &Opts, const Callback &OnAST) {
   tooling::ClangTool Tool(DB, {Opts.Source});
   // -x c++: a simulation is C++ whatever its file is called.
   std::vector<std::string> Baked = {"-x", "c++", "-resource-dir=" WASH_CLANG_RESOURCE_DIR,
-                                    "-isystem", apiIncludeDir(Opts.ExecutablePath)};
+                                    "-isystem", apiIncludeDir(Opts.ExecutablePath),
+                                    // wash's SPH library is user code on the API's
+                                    // path: analysed and rewritten with the simulation.
+                                    "--no-system-header-prefix=wash/sph/"};
   if (!UserDim)
     Baked.push_back("-DWASH_DIM=" + std::to_string(Dim));
   Tool.appendArgumentsAdjuster(
