@@ -70,6 +70,10 @@ private:
   std::uint64_t inChunk_ = 0, at_ = 0;
 };
 
+std::size_t chunkRows(std::size_t chunkBytes, std::size_t rowBytes) {
+  return std::max<std::size_t>(1, chunkBytes / rowBytes);
+}
+
 std::vector<char> packDoubles(const std::vector<double> &values) {
   std::vector<char> message(values.size() * 8);
   std::memcpy(message.data(), values.data(), message.size());
@@ -79,15 +83,15 @@ std::vector<char> packDoubles(const std::vector<double> &values) {
 } // namespace
 
 void writeCsvSpread(const Processes &processes, const Frame &local, const Columns &columns,
-                    std::ostream *out) {
+                    std::ostream *out, std::size_t chunkBytes) {
   const std::vector<std::uint64_t> counts = processes.allgather(local.size());
   const std::vector<std::size_t> order = local.orderById();
   const std::size_t width = widthOf(columns);
+  const std::size_t rows = chunkRows(chunkBytes, 8 + 8 * width);
   std::vector<char> message;
   if (processes.rank() != 0) {
-    for (std::size_t from = 0; from < order.size(); from += spreadChunkRows) {
-      packRows(local, columns, order, from, std::min(order.size(), from + spreadChunkRows),
-               message);
+    for (std::size_t from = 0; from < order.size(); from += rows) {
+      packRows(local, columns, order, from, std::min(order.size(), from + rows), message);
       processes.answer(message);
     }
     return;
@@ -96,7 +100,7 @@ void writeCsvSpread(const Processes &processes, const Frame &local, const Column
   std::size_t ownFrom = 0;
   sources.emplace_back(
       [&](std::vector<char> &m) {
-        const std::size_t to = std::min(order.size(), ownFrom + spreadChunkRows);
+        const std::size_t to = std::min(order.size(), ownFrom + rows);
         packRows(local, columns, order, ownFrom, to, m);
         ownFrom = to;
       },
@@ -127,18 +131,21 @@ void writeCsvSpread(const Processes &processes, const Frame &local, const Column
 }
 
 void writeVtpSpread(const Processes &processes, const Frame &local, const Columns &columns,
-                    const VtpOptions &options, std::ostream *out) {
+                    const VtpOptions &options, std::ostream *out, std::size_t chunkBytes) {
   const std::vector<std::uint64_t> counts = processes.allgather(local.size());
   const std::vector<VtpArray> arrays = vtpArrays(local, columns);
   std::vector<double> chunk;
+  auto rowsOf = [&](std::size_t a) {
+    return chunkRows(chunkBytes, 8 * std::size_t(arrays[a].components));
+  };
   auto valuesOf = [&](std::size_t a, std::size_t from) {
     chunk.clear();
-    vtpArrayValues(local, arrays[a], from, std::min(local.size(), from + spreadChunkRows), chunk);
+    vtpArrayValues(local, arrays[a], from, std::min(local.size(), from + rowsOf(a)), chunk);
   };
   if (processes.rank() != 0) {
     // The order rank 0 reads them in: array by array, a chunk at a time.
     for (std::size_t a = 0; a < arrays.size(); ++a)
-      for (std::size_t from = 0; from < local.size(); from += spreadChunkRows) {
+      for (std::size_t from = 0; from < local.size(); from += rowsOf(a)) {
         valuesOf(a, from);
         processes.answer(packDoubles(chunk));
       }
@@ -149,12 +156,12 @@ void writeVtpSpread(const Processes &processes, const Frame &local, const Column
     total += n;
   std::vector<double> remote;
   auto feed = [&](std::size_t a, const VtpEmit &emit) {
-    for (std::size_t from = 0; from < local.size(); from += spreadChunkRows) {
+    for (std::size_t from = 0; from < local.size(); from += rowsOf(a)) {
       valuesOf(a, from);
       emit(chunk.data(), chunk.size());
     }
     for (int r = 1; r < processes.count(); ++r)
-      for (std::uint64_t from = 0; from < counts[std::size_t(r)]; from += spreadChunkRows) {
+      for (std::uint64_t from = 0; from < counts[std::size_t(r)]; from += rowsOf(a)) {
         const std::vector<char> message = processes.request(r);
         remote.resize(message.size() / 8);
         std::memcpy(remote.data(), message.data(), message.size());

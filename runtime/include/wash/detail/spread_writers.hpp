@@ -16,14 +16,17 @@
 
 namespace wash::detail {
 
-/// Rows in a chunk: a chunk of a 3D frame with a dozen fields is about 0.5 MiB.
-inline constexpr std::size_t spreadChunkRows = 4096;
+/// The bytes of a chunk: about 1 MiB, so that a frame of millions of
+/// particles takes few round trips to rank 0 (latency, not bandwidth, bounds
+/// a request-answer exchange). A chunk holds at least one row.
+inline constexpr std::size_t spreadChunkBytes = std::size_t(1) << 20;
 
 /// Collective: `local` is this process's rows; `out` is the file on rank 0,
-/// null on the others.
+/// null on the others; every process passes the same `chunkBytes`.
 void writeCsvSpread(const Processes &processes, const Frame &local, const Columns &columns,
-                    std::ostream *out);
+                    std::ostream *out, std::size_t chunkBytes = spreadChunkBytes);
 void writeVtpSpread(const Processes &processes, const Frame &local, const Columns &columns,
-                    const VtpOptions &options, std::ostream *out);
+                    const VtpOptions &options, std::ostream *out,
+                    std::size_t chunkBytes = spreadChunkBytes);
 
 } // namespace wash::detail
