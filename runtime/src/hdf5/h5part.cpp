@@ -33,7 +33,7 @@ public:
   Handle(const Handle &) = delete;
   Handle &operator=(const Handle &) = delete;
   ~Handle() {
-    if (id_ >= 0)
+    if (id_ >= 0 && H5Iis_valid(id_) > 0) // fail() may have closed it
       close_(id_);
   }
   operator hid_t() const { return id_; }
@@ -58,6 +58,10 @@ class H5PartSeries final : public Hdf5Series {
 public:
   H5PartSeries(std::string path, std::string partial)
       : path_(std::move(path)), partial_(std::move(partial)) {
+    // No library shutdown at exit: after a failed write (a full disk) it
+    // crashes on what the failure left; close() closes the file of a run
+    // that succeeded. Before any other call, which would start the library.
+    H5dont_atexit();
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); // errors become RunErrors, not stack dumps
     Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
 #ifdef WASH_HDF5_PARALLEL
@@ -71,7 +75,7 @@ public:
       fail("create the file");
   }
   ~H5PartSeries() override {
-    if (file_ >= 0)
+    if (file_ >= 0 && !parallel) // parallel: see fail()
       H5Fclose(file_);
   }
 
@@ -214,7 +218,7 @@ private:
     return b;
   }
 
-  void attribute(hid_t group, const char *name, hid_t type, const void *value) const {
+  void attribute(hid_t group, const char *name, hid_t type, const void *value) {
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
     Handle attr(H5Acreate2(group, name, type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     if (!attr.valid() || H5Awrite(attr, type, value) < 0)
@@ -222,7 +226,7 @@ private:
   }
 
   void dataset(hid_t group, const std::string &name, hid_t type, const Block &b,
-               const void *values) const {
+               const void *values) {
     const hsize_t total = b.total, start = b.start, count = b.count, one = 1;
     Handle file(H5Screate_simple(1, &total, nullptr), H5Sclose);
     Handle set(H5Dcreate2(group, name.c_str(), type, file, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
@@ -245,11 +249,33 @@ private:
       fail("write the dataset " + name);
   }
 
-  [[noreturn]] void fail(const std::string &what) const {
+  /// A failed write leaves the file in no state a reader can trust (the
+  /// step being written is half there): it is closed and removed, like a
+  /// frame that could not be written whole.
+  [[noreturn]] void fail(const std::string &what) {
     const int error = errno;
-    throw RunError("error while writing '" + path_ + "': HDF5 could not " + what +
-                   (error ? std::string(": ") + std::strerror(error) : std::string()) +
-                   " (the steps written before it are in '" + partial_ + "')");
+    const std::string cause = error ? std::string(": ") + std::strerror(error) : std::string();
+    const hid_t file = std::exchange(file_, -1);
+    // Parallel: closing is collective, and the other ranks may not be here;
+    // the job is ended (MPI_Abort) once this error reaches the entry point.
+    if (file >= 0 && !parallel) {
+      // Every object of the file first (the group and dataset being
+      // written): closing them after the file makes HDF5 crash at exit.
+      const ssize_t open = H5Fget_obj_count(file, H5F_OBJ_ALL | H5F_OBJ_LOCAL);
+      std::vector<hid_t> ids(open > 0 ? std::size_t(open) : 0);
+      if (!ids.empty())
+        H5Fget_obj_ids(file, H5F_OBJ_ALL | H5F_OBJ_LOCAL, ids.size(), ids.data());
+      for (hid_t id : ids)
+        if (id != file)
+          H5Oclose(id);
+      H5Fclose(file);
+    }
+    if (rankOf() == 0) {
+      std::error_code ec;
+      std::filesystem::remove(partial_, ec);
+    }
+    throw RunError("error while writing '" + path_ + "': HDF5 could not " + what + cause +
+                   " (the partial file was removed)");
   }
 
   std::string path_, partial_;

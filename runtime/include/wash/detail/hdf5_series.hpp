@@ -39,7 +39,8 @@ public:
   virtual void close() = 0;
 };
 
-/// Creates `partial` (renamed onto `path` by close()); throws RunError.
+/// Creates `partial` (renamed onto `path` by close()); throws RunError. A
+/// failed write throws RunError too, having removed `partial`.
 using Hdf5Opener = std::unique_ptr<Hdf5Series> (*)(const std::string &path,
                                                    const std::string &partial);
 /// The program's HDF5 flavour; null where its entry point set none (unit tests).
