@@ -23,13 +23,15 @@ for backend in "$@"; do
   fi
 done
 for name in "${runs[@]}"; do
+  threads=2
   case $name in
-    mpi[0-9]) run=("$mpiexec" --allow-run-as-root --oversubscribe -np "${name#mpi}" "$bin/$scene-mpi") ;;
+    mpi[0-9]) run=("$mpiexec" --allow-run-as-root --oversubscribe -np "${name#mpi}" "$bin/$scene-mpi")
+      threads=1 ;; # ranks enough for the test's two cores
     *) run=("$bin/$scene-$name") ;;
   esac
-  OMP_NUM_THREADS=2 expect_exit 0 timeout 120 "${run[@]}" "${run_args[@]}" --quiet --format hdf5 \
+  OMP_NUM_THREADS=$threads expect_exit 0 timeout 120 "${run[@]}" "${run_args[@]}" --quiet --format hdf5 \
     --out "$name.h5out" --dump "$name.dump.csv"
-  OMP_NUM_THREADS=2 expect_exit 0 timeout 120 "${run[@]}" "${run_args[@]}" --quiet --format csv \
+  OMP_NUM_THREADS=$threads expect_exit 0 timeout 120 "${run[@]}" "${run_args[@]}" --quiet --format csv \
     --out "$name.csvout"
   [ "$(ls "$name.h5out")" = "$scene.h5" ] || fail "$name wrote $(ls "$name.h5out"), expected only $scene.h5"
 done
