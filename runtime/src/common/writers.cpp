@@ -89,8 +89,7 @@ template <> const char *vtkType<double>() { return "Float64"; }
 template <> const char *vtkType<std::int64_t>() { return "Int64"; }
 
 /// The opening tag of a DataArray, up to its format attributes.
-template <typename T>
-void openArray(std::ostream &out, const std::string &name, int components) {
+template <typename T> void openArray(std::ostream &out, const std::string &name, int components) {
   out << "        <DataArray type=\"" << vtkType<T>() << "\" Name=\"" << name << "\"";
   if (components)
     out << " NumberOfComponents=\"" << components << "\"";
@@ -164,7 +163,8 @@ void vtpArrayValues(const Frame &frame, const VtpArray &array, std::size_t begin
   case VtpArray::Values: {
     const std::vector<double> &v = array.column->values;
     const std::size_t c = std::size_t(array.components);
-    out.insert(out.end(), v.begin() + std::ptrdiff_t(begin * c), v.begin() + std::ptrdiff_t(end * c));
+    out.insert(out.end(), v.begin() + std::ptrdiff_t(begin * c),
+               v.begin() + std::ptrdiff_t(end * c));
     return;
   }
   }
@@ -178,16 +178,16 @@ void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &opti
               std::ostream &out) {
   const std::vector<VtpArray> arrays = vtpArrays(frame, columns);
   std::vector<double> chunk;
-  writeVtp(frame.size(), arrays, options,
-           [&](std::size_t a, const VtpEmit &emit) {
-             for (std::size_t from = 0; from < frame.size(); from += 1 << 14) {
-               chunk.clear();
-               vtpArrayValues(frame, arrays[a], from, std::min(frame.size(), from + (1 << 14)),
-                              chunk);
-               emit(chunk.data(), chunk.size());
-             }
-           },
-           out);
+  writeVtp(
+      frame.size(), arrays, options,
+      [&](std::size_t a, const VtpEmit &emit) {
+        for (std::size_t from = 0; from < frame.size(); from += 1 << 14) {
+          chunk.clear();
+          vtpArrayValues(frame, arrays[a], from, std::min(frame.size(), from + (1 << 14)), chunk);
+          emit(chunk.data(), chunk.size());
+        }
+      },
+      out);
 }
 
 void writeVtp(std::uint64_t n, const std::vector<VtpArray> &arrays, const VtpOptions &options,

@@ -83,8 +83,7 @@ public:
              const std::vector<Hdf5Dataset> &datasets) override {
     const Block block = place(rows, datasets);
     const std::string name = "Step#" + std::to_string(frames_++);
-    Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                 H5Gclose);
+    Handle group(H5Gcreate2(file_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
     if (!group.valid())
       fail("create the group " + name);
     attribute(group, "time", H5T_NATIVE_DOUBLE, &time);
@@ -175,8 +174,8 @@ private:
     b.total = global[0];
     if (global[1] != b.total)
       throw RunError("cannot write '" + path_ + "': the particle ids are not 0.." +
-                     std::to_string(b.total) + "-1 (the largest is " +
-                     std::to_string(global[1]) + "-1), which parallel HDF5 output relies on");
+                     std::to_string(b.total) + "-1 (the largest is " + std::to_string(global[1]) +
+                     "-1), which parallel HDF5 output relies on");
     const std::uint64_t per = (b.total + ranks - 1) / std::uint64_t(ranks);
     auto blockStart = [&](int r) { return std::min(b.total, per * std::uint64_t(r)); };
     int me = rankOf();
@@ -211,9 +210,8 @@ private:
     if (received != b.count * b.width)
       throw RunError("cannot write '" + path_ + "': the particle ids are not distinct");
     b.received.resize(received);
-    MPI_Alltoallv(send.data(), sendCounts.data(), sendAt.data(), MPI_UINT64_T,
-                  b.received.data(), recvCounts.data(), recvAt.data(), MPI_UINT64_T,
-                  MPI_COMM_WORLD);
+    MPI_Alltoallv(send.data(), sendCounts.data(), sendAt.data(), MPI_UINT64_T, b.received.data(),
+                  recvCounts.data(), recvAt.data(), MPI_UINT64_T, MPI_COMM_WORLD);
 #endif
     return b;
   }

@@ -109,7 +109,7 @@ private:
   };
   std::vector<Written> written_;
   bool seriesByTime_ = false;
-  bool root_;                          ///< writes the CSV, VTK and dump files
+  bool root_;                        ///< writes the CSV, VTK and dump files
   std::unique_ptr<Hdf5Series> hdf5_; ///< --format hdf5, from the first frame on
 };
 
