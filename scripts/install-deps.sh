@@ -14,6 +14,9 @@ packages=(
   python3-numpy python3-scipy python3-matplotlib
   # VTK's own reader for the VTK output tests (test/e2e/vtk_output.sh) and scripts/render_frame.py.
   python3-vtk9
+  # --format hdf5: serial HDF5 (reference, serial, openmp), parallel HDF5 over
+  # Open MPI (mpi backend), and h5py for the HDF5 tests and scripts/wash_read.py.
+  libhdf5-dev libhdf5-openmpi-dev python3-h5py
 )
 
 missing=()

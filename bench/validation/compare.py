@@ -7,7 +7,8 @@
 STATE.csv is a wash `--dump` file (header row, one row per particle) with at
 least the columns x, y, z, vx, vy, vz, density and pressure (or p); mass is
 used for the default bin width when present.  The dump carries no time: give
-the simulated time with --time.
+the simulated time with --time.  STATE may instead be the .h5 file of a run
+with --format hdf5 (its last step, read by scripts/wash_read.py).
 
 Geometry: r = |x - centre|; with --box L the separation is taken as the
 minimum image in a periodic cube of side L (each component wrapped into
@@ -54,8 +55,10 @@ import numpy as np
 
 sys.dont_write_bytecode = True  # keep the source tree clean
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
 import noh  # noqa: E402
 import sedov  # noqa: E402
+import wash_read  # noqa: E402
 
 MIN_PER_BIN = 4
 KEYS = ("l1_density", "l1_density_norm", "l1_pressure_norm", "l1_velocity_norm",
@@ -68,7 +71,15 @@ class InputError(Exception):
 
 
 def read_state(path):
-    """Columns of a wash CSV dump as a dict name -> float array."""
+    """Columns of a wash CSV dump (or .h5 file's last step) as a dict name -> float array."""
+    if path.endswith(".h5"):
+        frame = wash_read.load(path)
+        pressure = "pressure" if "pressure" in frame else "p"
+        if pressure not in frame or "z" not in frame:
+            raise InputError("%s: no pressure or z dataset; have %s" % (path, ",".join(frame)))
+        out = {c: frame[c] for c in ["x", "y", "z", "vx", "vy", "vz", "density", "mass"] if c in frame}
+        out["pressure"] = frame[pressure]
+        return out
     with open(path, newline="") as fh:
         header = next(csv.reader(fh), None)
     if not header:

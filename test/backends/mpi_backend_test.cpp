@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+
 namespace {
 
 static_assert(wash::backend::ParticleBackend<wash::mpi::Backend<2>>);
@@ -43,10 +46,16 @@ TEST(MpiBackend, EveryRankKeepsAShareAndReducesOverAll) {
   EXPECT_EQ(wash::mpi::traffic().sums - sent, sizeof(wash::detail::ExactSum::State));
   EXPECT_EQ(wash::mpi::Backend<2>::combineMax(double(wash::mpi::rank())),
             double(wash::mpi::ranks() - 1));
-  // Rank 0 gets every rank's particles; the others an empty frame.
+  // A frame stays on its rank (the output writes it collectively): its own
+  // rows, which over all ranks are every particle once.
   wash::backend::FrameBuilder f(2, P.id, &backend.owned());
-  const wash::detail::Frame all = backend.gather(f.take());
-  EXPECT_EQ(all.size(), wash::mpi::rank() == 0 ? 40u : 0u);
+  const wash::detail::Frame mine = backend.gather(f.take());
+  EXPECT_EQ(mine.size(), backend.owned().size());
+  std::vector<std::uint64_t> ids = wash::mpi::allgatherv(mine.ids);
+  std::sort(ids.begin(), ids.end());
+  std::vector<std::uint64_t> every(40);
+  std::iota(every.begin(), every.end(), std::uint64_t(0));
+  EXPECT_EQ(ids, every);
 }
 
 } // namespace

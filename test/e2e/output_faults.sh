@@ -61,6 +61,14 @@ for format in vtk csv; do
   ls -A "$disk" | grep -q "partial" && fail "$format: a partial file was left: $(ls -A "$disk")"
 done
 
+# HDF5: the step that does not fit stops the run, and the run's one file,
+# which that step left unreadable, is removed (partial files are never left).
+mount_disk 128k
+expect_exit 1 "$program" none --quiet --steps 20 --output-every 1 --format hdf5 --out "$disk"
+expect_in out.txt "error: error while writing '$disk/wash.h5': HDF5 could not"
+expect_in out.txt "No space left on device"
+[ -z "$(ls -A "$disk")" ] || fail "hdf5: files left on the full disk: $(ls -A "$disk")"
+
 # A disk already full at start: the run stops before its first step, for
 # the frames' directory and for the --dump file.
 mount_disk 64k

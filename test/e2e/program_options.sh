@@ -43,7 +43,7 @@ grep -q "wash" out.txt && fail "--quiet still printed the run header"
 expect_exit 2 "$sim" --steps many
 expect_in out.txt "option '--steps' expects a non-negative integer, got 'many'"
 expect_exit 2 "$sim" --format png
-expect_in out.txt "'vtk' or 'csv'"
+expect_in out.txt "'vtk', 'csv' or 'hdf5'"
 expect_exit 2 "$sim" --bogus
 expect_in out.txt "unknown option '--bogus'"
 grep -q "Calculated Time Step" out.txt && fail "the simulation ran despite a bad option"

@@ -3,13 +3,16 @@
 # or ASCII .vtp has the right points, fields and TimeValue, the values equal
 # the CSV frames of the same run exactly, --fields chooses the point data,
 # acc is in frames but never in --dump.
-#   vtk_output.sh PROGRAM   (the sim_time scene, any backend)
+#   vtk_output.sh PROGRAM [LAUNCHER...]   (the sim_time scene, any backend;
+#   LAUNCHER: e.g. mpiexec -np 3 for the mpi one, whose rank 0 writes chunks)
 . "$(dirname "$0")/lib.sh"
 program=$1
+shift
+launcher=("$@")
 py=/usr/bin/python3
 "$py" -c "import vtk" 2>/dev/null || { echo "SKIP: VTK's Python module (python3-vtk9) is not installed"; exit 77; }
 
-run=(timeout 120 "$program" --end-time 0.3 --output-dt 0.1 --quiet)
+run=(timeout 120 "${launcher[@]}" "$program" --end-time 0.3 --output-dt 0.1 --quiet)
 expect_exit 0 "${run[@]}" --out binary --dump dump.csv
 expect_exit 0 "${run[@]}" --out ascii --vtk-encoding ascii
 expect_exit 0 "${run[@]}" --out csv --format csv

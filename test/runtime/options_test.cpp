@@ -77,7 +77,7 @@ TEST(Options, BadInputIsRejectedWithAMessage) {
   expectError({"sim", "--steps"}, "expects a value");
   expectError({"sim", "--steps", "-3"}, "non-negative integer");
   expectError({"sim", "--steps=12x"}, "non-negative integer");
-  expectError({"sim", "--format", "png"}, "'vtk' or 'csv'");
+  expectError({"sim", "--format", "png"}, "'vtk', 'csv' or 'hdf5'");
   expectError({"sim", "--frobnicate"}, "unknown option '--frobnicate'");
   expectError({"sim", "--quiet=yes"}, "takes no value");
   expectError({"sim", "--dump="}, "expects a path");

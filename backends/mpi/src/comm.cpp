@@ -112,31 +112,43 @@ double allreduceMinMax(const std::vector<double> &values, const std::vector<std:
   return reduce(detail::reduceInIdOrder(mine, op), op == detail::ReduceOp::Min ? MPI_MIN : MPI_MAX);
 }
 
-detail::Frame gatherFrame(const detail::Frame &local) {
-  // Every rank has the same columns in the same order; gather each to rank 0.
-  auto gather = [](const auto &values) {
-    using T = typename std::decay_t<decltype(values)>::value_type;
-    int n = toInt(values.size());
-    std::vector<int> counts(ranks()), displs(ranks());
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    std::size_t total = 0;
-    for (int r = 0; r < ranks(); ++r) {
-      displs[r] = toInt(total);
-      total += counts[r];
-    }
-    std::vector<T> all(rank() == 0 ? total : 0);
-    MPI_Gatherv(values.data(), n, type<T>(), all.data(), counts.data(), displs.data(), type<T>(), 0,
-                MPI_COMM_WORLD);
+namespace {
+
+class WriterProcesses final : public detail::Processes {
+public:
+  WriterProcesses() { MPI_Comm_dup(MPI_COMM_WORLD, &comm_); }
+  int rank() const override { return mpi::rank(); }
+  int count() const override { return ranks(); }
+  std::vector<std::uint64_t> allgather(std::uint64_t value) const override {
+    std::vector<std::uint64_t> all(static_cast<std::size_t>(ranks()));
+    MPI_Allgather(&value, 1, MPI_UINT64_T, all.data(), 1, MPI_UINT64_T, comm_);
     return all;
-  };
-  detail::Frame all;
-  all.dimensions = local.dimensions;
-  all.ids = gather(local.ids);
-  for (const detail::Column &c : local.columns)
-    all.columns.push_back({c.name, c.components, gather(c.values), c.inDump});
-  if (rank() != 0)
-    return {};
-  return all;
+  }
+  std::vector<char> request(int from) const override {
+    MPI_Send(nullptr, 0, MPI_BYTE, from, askTag, comm_);
+    MPI_Status status;
+    MPI_Probe(from, dataTag, comm_, &status);
+    int bytes = 0;
+    MPI_Get_count(&status, MPI_BYTE, &bytes);
+    std::vector<char> message(static_cast<std::size_t>(bytes));
+    MPI_Recv(message.data(), bytes, MPI_BYTE, from, dataTag, comm_, MPI_STATUS_IGNORE);
+    return message;
+  }
+  void answer(const std::vector<char> &message) const override {
+    MPI_Recv(nullptr, 0, MPI_BYTE, 0, askTag, comm_, MPI_STATUS_IGNORE);
+    MPI_Send(message.data(), toInt(message.size()), MPI_BYTE, 0, dataTag, comm_);
+  }
+
+private:
+  static constexpr int askTag = 1, dataTag = 2;
+  MPI_Comm comm_;
+};
+
+} // namespace
+
+const detail::Processes &writerProcesses() {
+  static const WriterProcesses processes;
+  return processes;
 }
 
 } // namespace wash::mpi

@@ -7,6 +7,7 @@
 //
 //===----------------------------------------------------------------------===//
 #include <wash/detail/entry.hpp>
+#include <wash/detail/hdf5_series.hpp>
 #include <wash/mpi/comm.hpp>
 
 #include <mpi.h>
@@ -20,6 +21,8 @@ extern "C" int __wrap_main(int argc, char **argv) {
   if (wash::mpi::rank() != 0 && !std::freopen("/dev/null", "w", stdout))
     std::fprintf(stderr, "wash mpi: rank %d could not silence its standard output\n",
                  wash::mpi::rank());
+  wash::detail::processes() = &wash::mpi::writerProcesses();
+  wash::detail::hdf5Opener() = &wash::detail::openParallelHdf5Series;
   int status = wash::detail::runProgram(argc, argv, &__real_main);
   std::fflush(stdout);
   if (status != 0 && wash::mpi::ranks() > 1)

@@ -50,7 +50,9 @@ OutputFormat parseFormat(const std::string &text) {
     return OutputFormat::Vtk;
   if (text == "csv")
     return OutputFormat::Csv;
-  throw OptionError("option '--format' expects 'vtk' or 'csv', got '" + text + "'");
+  if (text == "hdf5")
+    return OutputFormat::Hdf5;
+  throw OptionError("option '--format' expects 'vtk', 'csv' or 'hdf5', got '" + text + "'");
 }
 
 bool takesValue(const std::string &name) {
@@ -144,6 +146,7 @@ std::string usageText(const std::string &program) {
          "  --vtk-encoding binary|ascii  VTK frames' arrays: raw binary, appended (default),\n"
          "                     or text\n"
          "  --format vtk|csv   frame format: .vtp files plus a .pvd series, or .csv (default vtk)\n"
+         "  --format hdf5      all frames in one <name>.h5 file, H5Part layout (Step#0, ...)\n"
          "  --dump FILE        write the final state as CSV, one row per particle sorted by id\n"
          "  --quiet            no run header, progress line or summary\n"
          "  --help             print this text and exit\n"

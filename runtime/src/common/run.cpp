@@ -1,3 +1,4 @@
+#include <wash/detail/processes.hpp>
 #include <wash/detail/run.hpp>
 
 #include <algorithm>
@@ -56,7 +57,9 @@ Run::Run(const Translation &translated, bool writes)
   radius_ = s.search.radius.value_or(0.0);
   if (std::string bad = checkBox(s.box, dimensions_, radius_); !bad.empty())
     throw RunError(bad);
-  if (writes_)
+  // In a distributed run every process takes part in writing (rank 0 only
+  // creates and checks the output directory).
+  if (writes_ || processes())
     output_ = std::make_unique<RunOutput>(o, s.outputBaseName());
 }
 
@@ -91,7 +94,7 @@ void Run::reserve(const Frame &frame) {
   if (!output_)
     return;
   output_->checkFields(frame);
-  output_->reserve(frameBytesEstimate(frame));
+  output_->reserve(frameBytesEstimate(frame, runStage().particles)); // every process's rows
 }
 
 void Run::write(std::uint64_t step, const Frame &frame) {
@@ -128,12 +131,13 @@ void Run::finish(const Frame &finalFrame) {
   if (!output_)
     return;
   output_->finish(finalFrame);
-  if (programOptions().quiet)
+  if (!writes_ || programOptions().quiet)
     return;
-  const double particleSteps = double(steps_) * double(finalFrame.size());
+  const std::uint64_t particles = runStage().particles; // finalFrame: this process's rows
+  const double particleSteps = double(steps_) * double(particles);
   std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); "
               "steps alone %.3f s, %.1f ns per particle-step; output in %s\n",
-              (unsigned long long)steps_, finalFrame.size(), seconds,
+              (unsigned long long)steps_, std::size_t(particles), seconds,
               seconds > 0 ? particleSteps / seconds : 0.0, stepSeconds_,
               particleSteps > 0 ? stepSeconds_ * 1e9 / particleSteps : 0.0,
               output_->directory().c_str());

@@ -1,4 +1,7 @@
+#include <wash/detail/hdf5_series.hpp>
+#include <wash/detail/processes.hpp>
 #include <wash/detail/run_output.hpp>
+#include <wash/detail/spread_writers.hpp>
 #include <wash/detail/writers.hpp>
 
 #include <fcntl.h>
@@ -85,7 +88,37 @@ std::string gib(std::uint64_t bytes) {
   return text;
 }
 
+/// Whether the run's rows are spread over several processes.
+const Processes *spread() {
+  const Processes *p = processes();
+  return p && p->count() > 1 ? p : nullptr;
+}
+
+/// The H5Part datasets of `columns`: named like the CSV columns, with z and
+/// vz zeros in 2D, as H5Part readers expect three coordinates.
+std::vector<Hdf5Dataset> hdf5Datasets(const Columns &columns) {
+  std::vector<Hdf5Dataset> sets;
+  for (const Column *column : columns) {
+    const std::vector<std::string> names = csvHeaders(*column);
+    for (int c = 0; c < column->components; ++c)
+      sets.push_back({names[std::size_t(c)], column, c});
+    if (column->components == 2 && (column->name == "pos" || column->name == "vel"))
+      sets.push_back({column->name == "pos" ? "z" : "vz", nullptr, 0});
+  }
+  return sets;
+}
+
 } // namespace
+
+const Processes *&processes() {
+  static const Processes *p = nullptr;
+  return p;
+}
+
+Hdf5Opener &hdf5Opener() {
+  static Hdf5Opener opener = nullptr;
+  return opener;
+}
 
 RunStage &runStage() {
   static RunStage stage;
@@ -116,9 +149,11 @@ std::string checkOutputName(const std::string &name) {
 }
 
 RunOutput::RunOutput(const RunOptions &options, std::string baseName)
-    : options_(options), baseName_(std::move(baseName)) {
+    : options_(options), baseName_(std::move(baseName)), root_(writesFiles()) {
   if (std::string bad = checkOutputName(baseName_); !bad.empty())
     throw RunError(bad);
+  if (!root_)
+    return;
   std::error_code ec;
   fs::create_directories(options_.outDir, ec);
   if (ec || !fs::is_directory(options_.outDir))
@@ -139,20 +174,28 @@ RunOutput::RunOutput(const RunOptions &options, std::string baseName)
   }
 }
 
+RunOutput::~RunOutput() = default;
+
 std::string RunOutput::probePath() const {
   return (fs::path(options_.outDir) / ".wash-write-test").string();
 }
 
 std::uint64_t frameBytesEstimate(const Frame &frame) {
+  return frameBytesEstimate(frame, frame.size());
+}
+
+std::uint64_t frameBytesEstimate(const Frame &frame, std::uint64_t rows) {
   // A value takes about 16 characters in either format (17 significant
   // digits, fewer for round numbers); ids, VTK connectivity and offsets fewer.
-  std::uint64_t values = 0;
+  std::uint64_t perRow = 0;
   for (const Column &column : frame.columns)
-    values += column.values.size();
-  return 16 * values + 24 * std::uint64_t(frame.size()) + 4096;
+    perRow += std::uint64_t(column.components);
+  return 16 * perRow * rows + 24 * rows + 4096;
 }
 
 void RunOutput::reserve(std::uint64_t bytes) {
+  if (!root_)
+    return;
   if (std::string bad = probe(probePath(), bytes); !bad.empty())
     throw RunError("cannot write frames to '" + options_.outDir + "': reserving " +
                    std::to_string(bytes) + " bytes (" + gib(bytes) +
@@ -196,10 +239,30 @@ void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional
   std::string path = (fs::path(options_.outDir) / file).string();
   checkFields(frame);
   const Columns columns = frameColumns(frame, options_.fields);
-  if (options_.format == OutputFormat::Vtk)
-    writeFile(path, [&](std::ostream &out) {
-      writeVtp(frame, columns, VtpOptions{.ascii = options_.vtkAscii, .time = time}, out);
-    });
+  if (options_.format == OutputFormat::Hdf5) {
+    if (!hdf5_) {
+      if (!hdf5Opener())
+        throw RunError("--format hdf5: this program has no HDF5 library linked");
+      const std::string h5 = (fs::path(options_.outDir) / (baseName_ + ".h5")).string();
+      hdf5_ = hdf5Opener()(h5, partialPath(h5));
+    }
+    hdf5_->write(step, time.value_or(0.0), frame, hdf5Datasets(columns));
+    return;
+  }
+  const VtpOptions vtp{.ascii = options_.vtkAscii, .time = time};
+  if (const Processes *p = spread()) {
+    auto write = [&](std::ostream *out) {
+      if (options_.format == OutputFormat::Vtk)
+        writeVtpSpread(*p, frame, columns, vtp, out);
+      else
+        writeCsvSpread(*p, frame, columns, out);
+    };
+    if (root_)
+      writeFile(path, [&](std::ostream &out) { write(&out); });
+    else
+      write(nullptr);
+  } else if (options_.format == OutputFormat::Vtk)
+    writeFile(path, [&](std::ostream &out) { writeVtp(frame, columns, vtp, out); });
   else
     writeFile(path, [&](std::ostream &out) { writeCsv(frame, columns, out); });
   written_.push_back({step, time.value_or(0.0), file});
@@ -207,15 +270,28 @@ void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional
 }
 
 void RunOutput::finish(const Frame &finalFrame) {
-  if (options_.format == OutputFormat::Vtk && !written_.empty()) {
+  if (hdf5_) {
+    hdf5_->close();
+    hdf5_.reset();
+  }
+  if (root_ && options_.format == OutputFormat::Vtk && !written_.empty()) {
     std::string path = (fs::path(options_.outDir) / (baseName_ + ".pvd")).string();
     std::vector<std::pair<double, std::string>> series;
     for (const Written &w : written_)
       series.emplace_back(seriesByTime_ ? w.time : double(w.step), w.file);
     writeFile(path, [&](std::ostream &out) { writePvd(series, out); });
   }
-  if (!options_.dumpPath.empty())
-    writeCsvFile(finalFrame, options_.dumpPath);
+  if (options_.dumpPath.empty())
+    return;
+  const Processes *p = spread();
+  if (!p)
+    return writeCsvFile(finalFrame, options_.dumpPath);
+  const Columns columns = dumpColumns(finalFrame);
+  if (root_)
+    writeFile(options_.dumpPath,
+              [&](std::ostream &out) { writeCsvSpread(*p, finalFrame, columns, &out); });
+  else
+    writeCsvSpread(*p, finalFrame, columns, nullptr);
 }
 
 void writeCsvFile(const Frame &frame, const std::string &path) {

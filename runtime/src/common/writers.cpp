@@ -25,23 +25,6 @@ std::string_view exact(double v, Text &buf) {
   return written(buf, std::to_chars(buf, std::end(buf), v, std::chars_format::general, 17));
 }
 
-/// n values separated by single spaces, text(k, buf) giving the k-th; written
-/// a block at a time rather than a value at a time.
-template <typename ValueText> void writeValues(std::ostream &out, std::size_t n, ValueText text) {
-  std::string block;
-  Text buf;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k)
-      block += ' ';
-    block += text(k, buf);
-    if (block.size() >= 1 << 16) {
-      out << block;
-      block.clear();
-    }
-  }
-  out << block;
-}
-
 } // namespace
 
 Columns dumpColumns(const Frame &frame) {
@@ -69,12 +52,24 @@ Columns frameColumns(const Frame &frame, const std::vector<std::string> &fields,
 
 void writeCsv(const Frame &frame, std::ostream &out) { writeCsv(frame, dumpColumns(frame), out); }
 
-void writeCsv(const Frame &frame, const Columns &columns, std::ostream &out) {
+void writeCsvHeader(const Columns &columns, std::ostream &out) {
   out << "id";
   for (const Column *column : columns)
     for (const std::string &h : csvHeaders(*column))
       out << ',' << h;
   out << '\n';
+}
+
+void appendCsvRow(std::string &line, std::uint64_t id, const double *values, std::size_t width) {
+  Text buf;
+  line += std::to_string(id);
+  for (std::size_t k = 0; k < width; ++k)
+    (line += ',') += exact(values[k], buf);
+  line += '\n';
+}
+
+void writeCsv(const Frame &frame, const Columns &columns, std::ostream &out) {
+  writeCsvHeader(columns, out);
   std::string line;
   Text buf;
   for (std::size_t row : frame.orderById()) {
@@ -89,58 +84,91 @@ void writeCsv(const Frame &frame, const Columns &columns, std::ostream &out) {
 
 namespace {
 
-/// The arrays of a binary .vtp, written after the XML in one appended block:
-/// each a UInt64 byte count, then its bytes, at the offset its DataArray names.
-class Appended {
-public:
-  /// The attributes of a DataArray whose values follow in the block.
-  template <typename T> std::string add(const std::vector<T> &values) {
-    blocks_.push_back({reinterpret_cast<const char *>(values.data()), values.size() * sizeof(T)});
-    std::string at = "format=\"appended\" offset=\"" + std::to_string(size_) + "\"";
-    size_ += sizeof(std::uint64_t) + values.size() * sizeof(T);
-    return at;
-  }
-  void write(std::ostream &out) const {
-    out << "  <AppendedData encoding=\"raw\">\n   _";
-    for (const auto &[data, bytes] : blocks_) {
-      const std::uint64_t count = bytes;
-      out.write(reinterpret_cast<const char *>(&count), sizeof count);
-      out.write(data, std::streamsize(bytes));
-    }
-    out << "\n  </AppendedData>\n";
-  }
-
-private:
-  std::vector<std::pair<const char *, std::size_t>> blocks_;
-  std::uint64_t size_ = 0;
-};
-
 template <typename T> const char *vtkType();
 template <> const char *vtkType<double>() { return "Float64"; }
 template <> const char *vtkType<std::int64_t>() { return "Int64"; }
 
-/// One DataArray: inline text, or a reference into the appended block.
-template <typename T>
-void dataArray(std::ostream &out, const std::string &name, int components,
-               const std::vector<T> &values, Appended *appended) {
+/// The opening tag of a DataArray, up to its format attributes.
+template <typename T> void openArray(std::ostream &out, const std::string &name, int components) {
   out << "        <DataArray type=\"" << vtkType<T>() << "\" Name=\"" << name << "\"";
   if (components)
     out << " NumberOfComponents=\"" << components << "\"";
-  if (appended) {
-    out << " " << appended->add(values) << "/>\n";
-    return;
+}
+
+/// One array's values as text, single spaces between, given in pieces and
+/// written a block at a time.
+class TextValues {
+public:
+  explicit TextValues(std::ostream &out) : out_(out) {}
+  template <typename T> void add(const T *values, std::size_t n) {
+    Text buf;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!first_)
+        block_ += ' ';
+      first_ = false;
+      if constexpr (std::is_same_v<T, double>)
+        block_ += exact(values[k], buf);
+      else
+        block_ += written(buf, std::to_chars(buf, std::end(buf), values[k]));
+      if (block_.size() >= 1 << 16) {
+        out_ << block_;
+        block_.clear();
+      }
+    }
   }
-  out << " format=\"ascii\">\n          ";
-  writeValues(out, values.size(), [&values](std::size_t k, Text &buf) {
-    if constexpr (std::is_same_v<T, double>)
-      return exact(values[k], buf);
-    else
-      return written(buf, std::to_chars(buf, std::end(buf), values[k]));
-  });
-  out << "\n        </DataArray>\n";
+  ~TextValues() { out_ << block_; }
+
+private:
+  std::ostream &out_;
+  std::string block_;
+  bool first_ = true;
+};
+
+/// Connectivity (k) or offsets (k + 1) of the n vertex cells, a block at a time.
+template <typename Emit> void cellNumbers(std::uint64_t n, std::int64_t shift, Emit emit) {
+  std::vector<std::int64_t> block;
+  for (std::uint64_t from = 0; from < n; from += 1 << 14) {
+    block.clear();
+    for (std::uint64_t k = from; k < std::min<std::uint64_t>(n, from + (1 << 14)); ++k)
+      block.push_back(std::int64_t(k) + shift);
+    emit(block.data(), block.size());
+  }
 }
 
 } // namespace
+
+std::vector<VtpArray> vtpArrays(const Frame &frame, const Columns &columns) {
+  std::vector<VtpArray> arrays{{"Points", 3, nullptr, VtpArray::Points},
+                               {"id", 1, nullptr, VtpArray::Id}};
+  for (const Column *column : columns)
+    if (column != &frame.columns.at(0))
+      arrays.push_back({column->name, column->components, column, VtpArray::Values});
+  return arrays;
+}
+
+void vtpArrayValues(const Frame &frame, const VtpArray &array, std::size_t begin, std::size_t end,
+                    std::vector<double> &out) {
+  switch (array.kind) {
+  case VtpArray::Points: {
+    const Column &pos = frame.columns.at(0);
+    for (std::size_t p = begin; p < end; ++p)
+      for (int c = 0; c < 3; ++c)
+        out.push_back(c < pos.components ? pos.values[p * pos.components + c] : 0.0);
+    return;
+  }
+  case VtpArray::Id:
+    for (std::size_t p = begin; p < end; ++p)
+      out.push_back(double(frame.ids[p]));
+    return;
+  case VtpArray::Values: {
+    const std::vector<double> &v = array.column->values;
+    const std::size_t c = std::size_t(array.components);
+    out.insert(out.end(), v.begin() + std::ptrdiff_t(begin * c),
+               v.begin() + std::ptrdiff_t(end * c));
+    return;
+  }
+  }
+}
 
 void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time) {
   writeVtp(frame, frameColumns(frame, {}), VtpOptions{.ascii = true, .time = time}, out);
@@ -148,14 +176,27 @@ void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time)
 
 void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &options,
               std::ostream &out) {
+  const std::vector<VtpArray> arrays = vtpArrays(frame, columns);
+  std::vector<double> chunk;
+  writeVtp(
+      frame.size(), arrays, options,
+      [&](std::size_t a, const VtpEmit &emit) {
+        for (std::size_t from = 0; from < frame.size(); from += 1 << 14) {
+          chunk.clear();
+          vtpArrayValues(frame, arrays[a], from, std::min(frame.size(), from + (1 << 14)), chunk);
+          emit(chunk.data(), chunk.size());
+        }
+      },
+      out);
+}
+
+void writeVtp(std::uint64_t n, const std::vector<VtpArray> &arrays, const VtpOptions &options,
+              const VtpFeed &feed, std::ostream &out) {
   static_assert(std::endian::native == std::endian::little, "binary VTK is written little-endian");
-  const std::size_t n = frame.size();
-  const Column &pos = frame.columns.at(0);
-  Appended block;
-  Appended *appended = options.ascii ? nullptr : &block;
+  const bool binary = !options.ascii;
   out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"PolyData\" version=\"" << (appended ? "1.0" : "0.1")
-      << "\" byte_order=\"LittleEndian\"" << (appended ? " header_type=\"UInt64\"" : "") << ">\n"
+      << "<VTKFile type=\"PolyData\" version=\"" << (binary ? "1.0" : "0.1")
+      << "\" byte_order=\"LittleEndian\"" << (binary ? " header_type=\"UInt64\"" : "") << ">\n"
       << "  <PolyData>\n";
   if (options.time) {
     Text buf;
@@ -167,28 +208,65 @@ void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &opti
   }
   out << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\">\n"
       << "      <Points>\n";
-  std::vector<double> points(3 * n, 0.0);
-  for (std::size_t p = 0; p < n; ++p)
-    for (int c = 0; c < pos.components; ++c)
-      points[3 * p + c] = pos.values[p * pos.components + c];
-  dataArray(out, "Points", 3, points, appended);
+  // Binary: every array after the XML, in one appended block, each a UInt64
+  // byte count then its bytes, at the offset its DataArray names.
+  std::uint64_t offset = 0;
+  auto appendedAt = [&](std::uint64_t values) {
+    out << " format=\"appended\" offset=\"" << offset << "\"/>\n";
+    offset += sizeof(std::uint64_t) + values * 8;
+  };
+  auto floats = [&](std::size_t a) {
+    openArray<double>(out, arrays[a].name, arrays[a].components);
+    if (binary)
+      return appendedAt(n * std::uint64_t(arrays[a].components));
+    out << " format=\"ascii\">\n          ";
+    {
+      TextValues text(out);
+      feed(a, [&](const double *v, std::size_t k) { text.add(v, k); });
+    }
+    out << "\n        </DataArray>\n";
+  };
+  auto cells = [&](const char *name, std::int64_t shift) {
+    openArray<std::int64_t>(out, name, 0);
+    if (binary)
+      return appendedAt(n);
+    out << " format=\"ascii\">\n          ";
+    {
+      TextValues text(out);
+      cellNumbers(n, shift, [&](const std::int64_t *v, std::size_t k) { text.add(v, k); });
+    }
+    out << "\n        </DataArray>\n";
+  };
+  floats(0);
   out << "      </Points>\n      <Verts>\n";
-  std::vector<std::int64_t> connectivity(n), offsets(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    connectivity[p] = std::int64_t(p);
-    offsets[p] = std::int64_t(p + 1);
-  }
-  dataArray(out, "connectivity", 0, connectivity, appended);
-  dataArray(out, "offsets", 0, offsets, appended);
+  cells("connectivity", 0);
+  cells("offsets", 1);
   out << "      </Verts>\n      <PointData>\n";
-  std::vector<double> ids(frame.ids.begin(), frame.ids.end());
-  dataArray(out, "id", 1, ids, appended);
-  for (const Column *column : columns)
-    if (column != &pos)
-      dataArray(out, column->name, column->components, column->values, appended);
+  for (std::size_t a = 1; a < arrays.size(); ++a)
+    floats(a);
   out << "      </PointData>\n    </Piece>\n  </PolyData>\n";
-  if (appended)
-    block.write(out);
+  if (binary) {
+    out << "  <AppendedData encoding=\"raw\">\n   _";
+    auto count = [&](std::uint64_t values) {
+      const std::uint64_t bytes = values * 8;
+      out.write(reinterpret_cast<const char *>(&bytes), sizeof bytes);
+    };
+    auto raw = [&](const auto *v, std::size_t k) {
+      out.write(reinterpret_cast<const char *>(v), std::streamsize(k * sizeof *v));
+    };
+    auto values = [&](std::size_t a) {
+      count(n * std::uint64_t(arrays[a].components));
+      feed(a, [&](const double *v, std::size_t k) { raw(v, k); });
+    };
+    values(0);
+    for (std::int64_t shift : {0, 1}) {
+      count(n);
+      cellNumbers(n, shift, [&](const std::int64_t *v, std::size_t k) { raw(v, k); });
+    }
+    for (std::size_t a = 1; a < arrays.size(); ++a)
+      values(a);
+    out << "\n  </AppendedData>\n";
+  }
   out << "</VTKFile>\n";
 }
 

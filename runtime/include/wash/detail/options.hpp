@@ -14,7 +14,7 @@
 
 namespace wash::detail {
 
-enum class OutputFormat { Vtk, Csv };
+enum class OutputFormat { Vtk, Csv, Hdf5 };
 
 struct RunOptions {
   std::optional<std::uint64_t> steps; ///< overrides set_max_iterations

@@ -10,6 +10,7 @@
 #include <wash/detail/options.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -52,16 +53,28 @@ bool frameDue(const RunOptions &options, std::uint64_t step, std::uint64_t lastS
 /// leave the output directory: "../x", "/abs/x"), or an empty string if it can.
 std::string checkOutputName(const std::string &name);
 
-/// About the size of `frame` written as VTK or CSV, for RunOutput::reserve.
+/// About the size of `frame` written as VTK or CSV, for RunOutput::reserve;
+/// with `rows`, of a frame of that many rows like it (an MPI rank's share).
 std::uint64_t frameBytesEstimate(const Frame &frame);
+std::uint64_t frameBytesEstimate(const Frame &frame, std::uint64_t rows);
+
+class Hdf5Series;
 
 /// Every file is written to a temporary file beside it and renamed into place,
-/// so a failed write (a full disk) leaves no truncated file behind.
+/// so a failed write (a full disk) leaves no truncated file behind; the HDF5
+/// file of --format hdf5 is renamed into place when the run finishes.
+///
+/// In a run spread over processes (processes(), MPI) every process has one
+/// and calls writeFrame and finish with its own rows, collectively: rank 0
+/// writes CSV, VTK and the dump from chunks of the others' rows; for HDF5
+/// each process writes its rows itself.
 class RunOutput {
 public:
   /// Checks the base name, creates the output directory and checks that it
-  /// and the --dump file's directory are writable (throws RunError).
+  /// and the --dump file's directory are writable (throws RunError); in a
+  /// distributed run, rank 0 only.
   RunOutput(const RunOptions &options, std::string baseName);
+  ~RunOutput();
 
   /// Checks that `bytes` (about a frame) can be allocated in the output
   /// directory and beside the --dump file (throws RunError): a disk that is
@@ -96,6 +109,8 @@ private:
   };
   std::vector<Written> written_;
   bool seriesByTime_ = false;
+  bool root_;                        ///< writes the CSV, VTK and dump files
+  std::unique_ptr<Hdf5Series> hdf5_; ///< --format hdf5, from the first frame on
 };
 
 /// Writes frame as CSV to path (throws RunError if it cannot).

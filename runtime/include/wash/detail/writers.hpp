@@ -3,6 +3,7 @@
 
 #include <wash/detail/frame.hpp>
 
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -35,6 +36,32 @@ struct VtpOptions {
 void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time = std::nullopt);
 void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &options,
               std::ostream &out);
+
+/// The arrays of a .vtp but connectivity and offsets, in file order: Points
+/// (pos with z = 0 in 2D), id, then the columns but pos.
+struct VtpArray {
+  std::string name;
+  int components = 1;
+  const Column *column = nullptr; ///< the column of a Values array
+  enum Kind { Points, Id, Values } kind = Values;
+};
+std::vector<VtpArray> vtpArrays(const Frame &frame, const Columns &columns);
+/// Appends to `out` the values of `array` for frame rows [begin, end).
+void vtpArrayValues(const Frame &frame, const VtpArray &array, std::size_t begin, std::size_t end,
+                    std::vector<double> &out);
+/// Called with consecutive pieces of one array's values, in row order.
+using VtpEmit = std::function<void(const double *values, std::size_t count)>;
+/// Gives array `array` (an index into the arrays) to `emit`, all of it, once.
+using VtpFeed = std::function<void(std::size_t array, const VtpEmit &emit)>;
+/// The same file for `points` rows whose values `feed` gives array by array,
+/// in file order: what a frame spread over processes is written with.
+void writeVtp(std::uint64_t points, const std::vector<VtpArray> &arrays, const VtpOptions &options,
+              const VtpFeed &feed, std::ostream &out);
+
+/// Appends a CSV row: the id, then `width` values, comma-separated, newline.
+void appendCsvRow(std::string &line, std::uint64_t id, const double *values, std::size_t width);
+/// The CSV header row of `columns` (id first).
+void writeCsvHeader(const Columns &columns, std::ostream &out);
 
 /// A ParaView collection (.pvd) listing (time, file) pairs.
 void writePvd(const std::vector<std::pair<double, std::string>> &datasets, std::ostream &out);

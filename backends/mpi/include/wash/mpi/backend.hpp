@@ -65,8 +65,10 @@ public:
     return allreduceMinMax(values, halo_.owned, op);
   }
   static double combineMax(double v) { return allreduceMax(v); }
-  /// Collective: every rank's particles, on rank 0.
-  ::wash::detail::Frame gather(::wash::detail::Frame local) const { return gatherFrame(local); }
+  /// A frame stays on its rank: the run's output writes every rank's rows
+  /// collectively (detail::processes(), set by the entry point), through rank
+  /// 0 in bounded chunks for CSV and VTK, by each rank itself for HDF5.
+  ::wash::detail::Frame gather(::wash::detail::Frame local) const { return local; }
 
   /// Collective: the traffic of the run, per step, over all ranks.
   void report(const backend::Run &run) const {

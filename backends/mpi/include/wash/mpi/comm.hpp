@@ -3,6 +3,7 @@
 
 #include <wash/detail/exact_sum.hpp>
 #include <wash/detail/frame.hpp>
+#include <wash/detail/processes.hpp>
 #include <wash/detail/reduction.hpp>
 
 #include <cstdint>
@@ -42,7 +43,8 @@ detail::ExactSum allreduceSum(const detail::ExactSum &local);
 double allreduceMinMax(const std::vector<double> &values, const std::vector<std::uint32_t> &rows,
                        detail::ReduceOp op);
 
-/// The frames of all ranks, concatenated, on rank 0 (others get an empty frame).
-detail::Frame gatherFrame(const detail::Frame &local);
+/// The ranks as the writers see them (wash/detail/processes.hpp), on a
+/// communicator of their own; after MPI_Init only.
+const detail::Processes &writerProcesses();
 
 } // namespace wash::mpi
