@@ -65,6 +65,26 @@ public:
     return allreduceMinMax(values, halo_.owned, op);
   }
   static double combineMax(double v) { return allreduceMax(v); }
+
+  // Checkpoint and restart (wash/backend/checkpoint.hpp): collective.
+  int rankIndex() const { return rank(); }
+  int rankCount() const { return ranks(); }
+  void barrier() const { allreduceSum(std::uint64_t(0)); }
+  bool anyRank(bool flag) const { return allreduceMax(std::uint64_t(flag)) != 0; }
+  std::uint64_t sumOverRanks(std::uint64_t v) const { return allreduceSum(v); }
+  /// The particles this rank read from a checkpoint (any share) go to their
+  /// owners, on a domain balanced by a sample of every rank's cells.
+  template <typename Particles, typename CellSize>
+  std::uint64_t restore(Particles &P, CellSize cellSize) {
+    halo_.ownAll(P.size());
+    domain_.setCellSize(cellSize());
+    std::vector<std::uint64_t> keys(P.size());
+    for (Index i = 0; i < P.size(); ++i)
+      keys[i] = domain_.keyAt(P.pos[i]);
+    domain_.balance(std::move(keys), double(P.size()));
+    migrate(P, domain_, halo_);
+    return allreduceSum(std::uint64_t(halo_.owned.size()));
+  }
   /// Collective: every rank's particles, on rank 0.
   ::wash::detail::Frame gather(::wash::detail::Frame local) const { return gatherFrame(local); }
 
