@@ -77,7 +77,10 @@ public:
   template <typename Particles, typename CellSize>
   std::uint64_t restore(Particles &P, CellSize cellSize) {
     halo_.ownAll(P.size());
-    domain_.setCellSize(cellSize());
+    // cellSize() sees this rank's particles only (at the start every rank has
+    // all of them): the largest over the ranks that have some.
+    const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
+    domain_.setCellSize(largest > 0.0 ? largest : 1.0);
     std::vector<std::uint64_t> keys(P.size());
     for (Index i = 0; i < P.size(); ++i)
       keys[i] = domain_.keyAt(P.pos[i]);
