@@ -130,15 +130,16 @@ CheckpointState Run::checkpointState(std::uint64_t step, std::uint32_t shards,
   return s;
 }
 
-void Run::checkpointWritten(const std::string &folder, std::uint64_t step) const {
+void Run::checkpointWritten(const std::string &folder, std::uint64_t step, double seconds) {
   if (writes_ && !programOptions().quiet)
-    std::printf("wash: checkpoint of iteration %llu written to %s\n", (unsigned long long)step,
-                folder.c_str());
+    std::printf("wash: checkpoint of iteration %llu written to %s in %.3f s\n",
+                (unsigned long long)step, folder.c_str(), seconds);
   std::fflush(stdout);
+  stepStart_ = Clock::now();
 }
 
 std::uint64_t Run::resume(const CheckpointState &saved, std::size_t particles,
-                          const std::string &folder) {
+                          const std::string &folder, double readSeconds) {
   // The variables main added must be the checkpoint's (their values are its).
   std::map<std::string, double> &vars = variables();
   bool same = vars.size() == saved.variables.size();
@@ -166,8 +167,8 @@ std::uint64_t Run::resume(const CheckpointState &saved, std::size_t particles,
     output_->continueSeries(saved.frames, saved.seriesByTime);
   started(particles);
   if (writes_ && !programOptions().quiet)
-    std::printf("wash: restarting from %s, after iteration %llu (t = %.17g)\n", folder.c_str(),
-                (unsigned long long)saved.iteration, saved.time);
+    std::printf("wash: restarting from %s, after iteration %llu (t = %.17g), read in %.3f s\n",
+                folder.c_str(), (unsigned long long)saved.iteration, saved.time, readSeconds);
   std::fflush(stdout);
   runStage() = {particles, saved.iteration + 1, true, steps_};
   watchStopSignals();

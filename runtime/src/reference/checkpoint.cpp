@@ -10,6 +10,7 @@
 
 #include <wash/detail/checkpoint.hpp>
 
+#include <chrono>
 #include <cstring>
 
 namespace wash::detail {
@@ -33,6 +34,10 @@ void fill(std::vector<T> &v, const Shard &shard, const std::string &name, const 
   throw RunError("cannot restart from checkpoint '" + from + "': it has no column '" + name + "'");
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string forceColumn(const Force &f) { return (f.isVector ? "vector:" : "scalar:") + f.name; }
 
 /// The builtin columns and the forces main registered: what a restart of the
@@ -47,7 +52,8 @@ std::vector<CheckpointField> fields(const State &s) {
   return out;
 }
 
-void write(const Run &run, const State &s, std::uint64_t step) {
+void write(Run &run, const State &s, std::uint64_t step) {
+  const auto start = std::chrono::steady_clock::now();
   const ParticleStore &p = s.particles;
   const std::size_t n = p.size();
   Shard shard;
@@ -71,7 +77,7 @@ void write(const Run &run, const State &s, std::uint64_t step) {
   writeShard(shardPath(partial, 0), id, shard);
   writeIndex(indexPath(partial), id, run.checkpointState(step, 1, n));
   completeCheckpoint(partial, folder, programOptions().keepCheckpoints);
-  run.checkpointWritten(folder, step);
+  run.checkpointWritten(folder, step, secondsSince(start));
 }
 
 } // namespace
@@ -84,7 +90,7 @@ std::string referenceProgram(const State &s) {
   return text;
 }
 
-void checkpointAfterStep(const Run &run, const State &s, std::uint64_t step) {
+void checkpointAfterStep(Run &run, const State &s, std::uint64_t step) {
   const bool stop = stopSignal() != 0;
   if (run.checkpointDue() || stop)
     write(run, s, step);
@@ -97,6 +103,7 @@ void checkpointAfterStep(const Run &run, const State &s, std::uint64_t step) {
 }
 
 void restoreCheckpoint(Run &run, State &s) {
+  const auto start = std::chrono::steady_clock::now();
   const CheckpointIdentity id = run.identity(fields(s));
   const std::string folder = resolveRestart(programOptions().restartPath);
   const CheckpointState saved = readIndex(folder, id);
@@ -129,7 +136,7 @@ void restoreCheckpoint(Run &run, State &s) {
       }
     }
   }
-  run.resume(saved, p.size(), folder);
+  run.resume(saved, p.size(), folder, secondsSince(start));
 }
 
 } // namespace wash::detail

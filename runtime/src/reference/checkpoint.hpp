@@ -13,7 +13,7 @@ namespace wash::detail {
 /// The reference's Translation::program: its kernels in registration order.
 std::string referenceProgram(const State &s);
 /// After run.endStep: a checkpoint if one is due, the stop a signal asked for.
-void checkpointAfterStep(const Run &run, const State &s, std::uint64_t step);
+void checkpointAfterStep(Run &run, const State &s, std::uint64_t step);
 /// With --restart, instead of the init kernels: the store and the run's state.
 void restoreCheckpoint(Run &run, State &s);
 

@@ -117,7 +117,7 @@ public:
   /// Instead of begin(), after the particles were read from `folder`: the
   /// state of `saved` restored, the header printed. Returns the first step.
   std::uint64_t resume(const CheckpointState &saved, std::size_t particles,
-                       const std::string &folder);
+                       const std::string &folder, double readSeconds);
   /// Whether --checkpoint-every or --checkpoint-dt asks for one after the
   /// step endStep just ended.
   bool checkpointDue() const { return checkpointDue_; }
@@ -126,8 +126,9 @@ public:
   /// The state after `step`, for the index (on the writing process).
   CheckpointState checkpointState(std::uint64_t step, std::uint32_t shards,
                                   std::uint64_t particles) const;
-  /// Says where the checkpoint went (writing run, not --quiet).
-  void checkpointWritten(const std::string &folder, std::uint64_t step) const;
+  /// Says where the checkpoint went and how long it took (writing run, not
+  /// --quiet); that time is not counted as the steps'.
+  void checkpointWritten(const std::string &folder, std::uint64_t step, double seconds);
   /// Prints one more line of the end-of-run summary (writing run, not --quiet).
   void report(const std::string &line) const;
 

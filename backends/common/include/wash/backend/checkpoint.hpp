@@ -15,6 +15,7 @@
 #include <wash/backend/run.hpp>
 #include <wash/detail/checkpoint.hpp>
 
+#include <chrono>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -31,8 +32,9 @@ template <typename Columns> std::vector<detail::CheckpointField> checkpointField
 
 /// Writes a checkpoint of the state after `step` (collective).
 template <typename B, typename Columns>
-void writeCheckpoint(const B &backend, const Run &run, std::uint64_t step,
+void writeCheckpoint(const B &backend, Run &run, std::uint64_t step,
                      std::uint64_t particles, Columns columns) {
+  const auto start = std::chrono::steady_clock::now();
   const std::string folder = detail::checkpointFolder(run.checkpointDir(), step);
   const std::string partial = detail::partialFolder(folder);
   const bool writer = backend.rankIndex() == 0;
@@ -56,15 +58,16 @@ void writeCheckpoint(const B &backend, const Run &run, std::uint64_t step,
     detail::writeIndex(detail::indexPath(partial), id,
                        run.checkpointState(step, std::uint32_t(backend.rankCount()), particles));
     detail::completeCheckpoint(partial, folder, detail::programOptions().keepCheckpoints);
-    run.checkpointWritten(folder, step);
   }
   backend.barrier(); // complete before any process goes on (or stops)
+  run.checkpointWritten(
+      folder, step, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 /// After run.endStep: a checkpoint if one is due, and the stop a signal asked
 /// for (every process decides alike: one collective flag per step).
 template <typename B, typename Columns>
-void afterStep(const B &backend, const Run &run, std::uint64_t step, std::uint64_t particles,
+void afterStep(const B &backend, Run &run, std::uint64_t step, std::uint64_t particles,
                Columns columns) {
   const bool stop = backend.anyRank(detail::stopSignal() != 0);
   if (run.checkpointDue() || stop)
@@ -86,6 +89,7 @@ void afterStep(const B &backend, const Run &run, std::uint64_t step, std::uint64
 template <typename B, typename Particles, typename Columns, typename CellSize>
 std::uint64_t restoreCheckpoint(B &backend, Run &run, Particles &P, Columns columns,
                                 CellSize cellSize) {
+  const auto start = std::chrono::steady_clock::now();
   const detail::CheckpointIdentity id = run.identity(checkpointFields(columns));
   const std::string folder = detail::resolveRestart(detail::programOptions().restartPath);
   const detail::CheckpointState saved = detail::readIndex(folder, id);
@@ -106,8 +110,8 @@ std::uint64_t restoreCheckpoint(B &backend, Run &run, Particles &P, Columns colu
         if (c.field.name == name && c.field.elementBytes == bytes)
           found = &c;
       if (!found)
-        throw detail::RunError("cannot restart from checkpoint '" + folder + "': a shard has no column '" +
-                               name + "'");
+        throw detail::RunError("cannot restart from checkpoint '" + folder +
+                               "': a shard has no column '" + name + "'");
       if (shard.particles)
         std::memcpy(static_cast<void *>(&column[row]), found->bytes.data(), found->bytes.size());
       row += shard.particles;
@@ -118,7 +122,8 @@ std::uint64_t restoreCheckpoint(B &backend, Run &run, Particles &P, Columns colu
                            std::to_string(backend.sumOverRanks(local)) +
                            " particles, its index " + std::to_string(saved.particles));
   const std::uint64_t particles = backend.restore(P, cellSize);
-  run.resume(saved, particles, folder);
+  run.resume(saved, particles, folder,
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return particles;
 }
 
