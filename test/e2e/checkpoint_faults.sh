@@ -47,6 +47,16 @@ cmp -s stop.csv stop-r.csv || fail "adaptive_h restarted from $(ls stop/checkpoi
 [ -f "stop-r/$last" ] && cmp -s stop/adaptive_h.pvd stop-r/adaptive_h.pvd ||
   fail "the restarted adaptive_h did not stop at ${last}: $(ls stop-r)"
 
+# --checkpoint-dt: after the steps whose end crosses a multiple (sedov: t = 0.0131 at
+# step 5, 0.0206 at step 7); the restart from the first matches the straight run.
+s=$bin/sedov-serial
+expect_exit 0 "$s" --end-time 0.022 --checkpoint-dt 0.01 --quiet --out dt --dump dt.csv -- 8
+[ "$(ls dt/checkpoints | tr '\n' ' ')" = "checkpoint_000005 checkpoint_000007 " ] ||
+  fail "--checkpoint-dt 0.01 wrote $(ls dt/checkpoints)"
+expect_exit 0 "$s" --end-time 0.022 --quiet --out dt-r --dump dt-r.csv \
+  --restart dt/checkpoints/checkpoint_000005 -- 8
+cmp -s dt.csv dt-r.csv || fail "sedov restarted from the --checkpoint-dt checkpoint differs"
+
 # SIGTERM (on the seed, stable for long): stop after the iteration under way,
 # checkpoint, exit 75.
 c=$bin/ca_fluid_sim-serial

@@ -167,7 +167,11 @@ std::vector<char> readChecked(const std::string &path, const char (&magic)[8]) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw RunError("cannot read checkpoint file '" + path + "': " + std::strerror(errno));
-  std::vector<char> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  std::vector<char> file(ec ? 0 : std::size_t(size));
+  if (!in.read(file.data(), std::streamsize(file.size())))
+    throw RunError("cannot read checkpoint file '" + path + "': " + std::strerror(errno));
   if (file.size() < 8 + 4 + 8 || std::memcmp(file.data(), magic, 8) != 0)
     throw RunError("'" + path + "' is not a wash checkpoint file" +
                    (file.size() < 20 ? " (it is truncated or empty)" : ""));
