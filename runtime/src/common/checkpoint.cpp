@@ -72,7 +72,9 @@ private:
 /// Little-endian (the machines wash runs on) fields, appended to a header.
 struct Encoder {
   std::string bytes;
-  template <typename T> void put(T v) { bytes.append(reinterpret_cast<const char *>(&v), sizeof v); }
+  template <typename T> void put(T v) {
+    bytes.append(reinterpret_cast<const char *>(&v), sizeof v);
+  }
   void text(const std::string &s) {
     put(std::uint32_t(s.size()));
     bytes += s;
@@ -111,8 +113,8 @@ struct Decoder {
   }
   void need(std::uint64_t n) const {
     if (n > file.size() - 8 - at) // the last 8 bytes are the checksum
-      throw RunError("checkpoint file '" + path + "' is truncated (" +
-                     std::to_string(file.size()) + " bytes, its header announces more)");
+      throw RunError("checkpoint file '" + path + "' is truncated (" + std::to_string(file.size()) +
+                     " bytes, its header announces more)");
   }
   CheckpointIdentity identity() {
     CheckpointIdentity id;
@@ -154,8 +156,8 @@ std::string mismatch(const CheckpointIdentity &got, const CheckpointIdentity &wa
     return "it is of simulation '" + got.simulation + "'; this program runs '" + want.simulation +
            "'";
   if (got.program != want.program)
-    return "it was written by another program (kernels or columns differ: program " +
-           got.program + ", this one " + want.program + ")";
+    return "it was written by another program (kernels or columns differ: program " + got.program +
+           ", this one " + want.program + ")";
   if (got.fields != want.fields)
     return "its columns are " + fieldNames(got.fields) + "; this program's are " +
            fieldNames(want.fields);
@@ -178,9 +180,8 @@ std::vector<char> readChecked(const std::string &path, const char (&magic)[8]) {
   std::uint32_t version;
   std::memcpy(&version, file.data() + 8, 4);
   if (version != formatVersion)
-    throw RunError("checkpoint file '" + path + "' has format version " +
-                   std::to_string(version) + "; this program reads version " +
-                   std::to_string(formatVersion));
+    throw RunError("checkpoint file '" + path + "' has format version " + std::to_string(version) +
+                   "; this program reads version " + std::to_string(formatVersion));
   return file;
 }
 
@@ -300,8 +301,7 @@ void writeShard(const std::string &path, const CheckpointIdentity &id, const Sha
   writeAtomically(path, e.bytes, blocks);
 }
 
-void writeIndex(const std::string &path, const CheckpointIdentity &id,
-                const CheckpointState &s) {
+void writeIndex(const std::string &path, const CheckpointIdentity &id, const CheckpointState &s) {
   Encoder e = headerOf(indexMagic);
   e.identity(id);
   e.put(s.iteration);
@@ -328,8 +328,7 @@ void writeIndex(const std::string &path, const CheckpointIdentity &id,
   writeAtomically(path, e.bytes, {});
 }
 
-void completeCheckpoint(const std::string &partial, const std::string &folder,
-                        std::uint64_t keep) {
+void completeCheckpoint(const std::string &partial, const std::string &folder, std::uint64_t keep) {
   std::error_code ec;
   fs::remove_all(folder, ec); // the same iteration, written again
   fs::rename(partial, folder, ec);
@@ -438,7 +437,7 @@ std::string identityHash(const std::string &text) {
 }
 
 void watchStopSignals() {
-  struct sigaction action {};
+  struct sigaction action{};
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
   sigaction(SIGTERM, &action, nullptr);

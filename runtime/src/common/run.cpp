@@ -3,10 +3,10 @@
 #include <wash/detail/variables.hpp>
 
 #include <algorithm>
-#include <filesystem>
-#include <map>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <map>
 
 namespace wash::detail {
 namespace {
@@ -56,8 +56,8 @@ std::string afterKernel(std::uint64_t step, const std::string &kernel) {
 
 Run::Run(const Translation &translated, bool writes)
     : backend_(translated.backend), program_(identityHash(translated.program)),
-      dimensions_(translated.dimensions),
-      useFloat_(checkedPrecision(translated, runSettings())), writes_(writes) {
+      dimensions_(translated.dimensions), useFloat_(checkedPrecision(translated, runSettings())),
+      writes_(writes) {
   const RunSettings &s = runSettings();
   const RunOptions &o = programOptions();
   checkRule(translated, s.search);

@@ -16,8 +16,8 @@
 namespace wash::detail {
 namespace {
 
-template <typename T> Shard::Column columnOf(const std::string &name, const std::vector<T> &v,
-                                             std::size_t n) {
+template <typename T>
+Shard::Column columnOf(const std::string &name, const std::vector<T> &v, std::size_t n) {
   Shard::Column c{{name, std::uint32_t(sizeof(T))}, std::vector<char>(n * sizeof(T), 0)};
   std::memcpy(c.bytes.data(), v.data(), std::min(n, v.size()) * sizeof(T));
   return c;
@@ -43,9 +43,13 @@ std::string forceColumn(const Force &f) { return (f.isVector ? "vector:" : "scal
 /// The builtin columns and the forces main registered: what a restart of the
 /// same program knows before any kernel ran.
 std::vector<CheckpointField> fields(const State &s) {
-  std::vector<CheckpointField> out = {
-      {"id", 8},           {"pos", sizeof(ParticleVec)},  {"vel", sizeof(ParticleVec)},
-      {"acc", sizeof(ParticleVec)}, {"density", 8}, {"mass", 8}, {"smoothing_length", 8}};
+  std::vector<CheckpointField> out = {{"id", 8},
+                                      {"pos", sizeof(ParticleVec)},
+                                      {"vel", sizeof(ParticleVec)},
+                                      {"acc", sizeof(ParticleVec)},
+                                      {"density", 8},
+                                      {"mass", 8},
+                                      {"smoothing_length", 8}};
   for (const Force &f : s.forces)
     if (f.registered)
       out.push_back({forceColumn(f), std::uint32_t(f.isVector ? sizeof(ParticleVec) : 8)});
@@ -58,18 +62,21 @@ void write(Run &run, const State &s, std::uint64_t step) {
   const std::size_t n = p.size();
   Shard shard;
   shard.particles = n;
-  shard.columns = {columnOf("id", p.id, n),           columnOf("pos", p.pos, n),
-                   columnOf("vel", p.vel, n),         columnOf("acc", p.acc, n),
-                   columnOf("density", p.density, n), columnOf("mass", p.mass, n),
+  shard.columns = {columnOf("id", p.id, n),
+                   columnOf("pos", p.pos, n),
+                   columnOf("vel", p.vel, n),
+                   columnOf("acc", p.acc, n),
+                   columnOf("density", p.density, n),
+                   columnOf("mass", p.mass, n),
                    columnOf("smoothing_length", p.smoothingLength, n)};
   static const std::vector<double> noScalars;
   static const std::vector<ParticleVec> noVectors;
   for (const Force &f : s.forces)
     shard.columns.push_back(
-        f.isVector ? columnOf(forceColumn(f),
-                              f.slot < p.vectors.size() ? p.vectors[f.slot] : noVectors, n)
-                   : columnOf(forceColumn(f),
-                              f.slot < p.scalars.size() ? p.scalars[f.slot] : noScalars, n));
+        f.isVector
+            ? columnOf(forceColumn(f), f.slot < p.vectors.size() ? p.vectors[f.slot] : noVectors, n)
+            : columnOf(forceColumn(f), f.slot < p.scalars.size() ? p.scalars[f.slot] : noScalars,
+                       n));
   const std::string folder = checkpointFolder(run.checkpointDir(), step);
   const std::string partial = partialFolder(folder);
   const CheckpointIdentity id = run.identity(fields(s));

@@ -64,7 +64,8 @@ struct CheckpointState {
   double time = 0.0, timeStep = 0.0;
   bool timeStepSet = false, stopRequested = false;
   std::vector<std::pair<std::string, double>> variables;
-  std::uint64_t nextOutput = 0, nextCheckpoint = 0; ///< the next --output-dt / --checkpoint-dt multiple
+  std::uint64_t nextOutput = 0,
+                nextCheckpoint = 0; ///< the next --output-dt / --checkpoint-dt multiple
   bool seriesByTime = false;
   std::vector<RunOutput::Written> frames; ///< the .pvd series so far
   std::uint32_t shards = 1;
@@ -92,8 +93,7 @@ void completeCheckpoint(const std::string &partial, const std::string &folder, s
 std::string resolveRestart(const std::string &path);
 /// Reads and checks a file of checkpoint `folder` (throws RunError, saying why).
 CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &expected);
-Shard readShard(const std::string &folder, std::uint32_t shard,
-                const CheckpointIdentity &expected);
+Shard readShard(const std::string &folder, std::uint32_t shard, const CheckpointIdentity &expected);
 
 /// A short hash of `text`, for CheckpointIdentity::program.
 std::string identityHash(const std::string &text);

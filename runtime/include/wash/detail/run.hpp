@@ -190,7 +190,7 @@ private:
   std::uint64_t steps_ = 0;
   double radius_ = 0.0;
   std::optional<double> endTime_, outputDt_;
-  std::uint64_t nextOutput_ = 0; ///< the multiple of outputDt_ the next time frame waits for
+  std::uint64_t nextOutput_ = 0;     ///< the multiple of outputDt_ the next time frame waits for
   std::uint64_t nextCheckpoint_ = 0; ///< the same for --checkpoint-dt
   bool checkpointDue_ = false;
   std::uint64_t firstStep_ = 1;

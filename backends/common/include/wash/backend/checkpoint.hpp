@@ -32,8 +32,8 @@ template <typename Columns> std::vector<detail::CheckpointField> checkpointField
 
 /// Writes a checkpoint of the state after `step` (collective).
 template <typename B, typename Columns>
-void writeCheckpoint(const B &backend, Run &run, std::uint64_t step,
-                     std::uint64_t particles, Columns columns) {
+void writeCheckpoint(const B &backend, Run &run, std::uint64_t step, std::uint64_t particles,
+                     Columns columns) {
   const auto start = std::chrono::steady_clock::now();
   const std::string folder = detail::checkpointFolder(run.checkpointDir(), step);
   const std::string partial = detail::partialFolder(folder);
@@ -61,7 +61,8 @@ void writeCheckpoint(const B &backend, Run &run, std::uint64_t step,
   }
   backend.barrier(); // complete before any process goes on (or stops)
   run.checkpointWritten(
-      folder, step, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      folder, step,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 /// After run.endStep: a checkpoint if one is due, and the stop a signal asked
@@ -74,12 +75,11 @@ void afterStep(const B &backend, Run &run, std::uint64_t step, std::uint64_t par
     writeCheckpoint(backend, run, step, particles, columns);
   if (stop) {
     const std::string folder = detail::checkpointFolder(run.checkpointDir(), step);
-    throw detail::Interrupted(
-        backend.rankIndex() != 0
-            ? ""
-            : "stopped by a signal after iteration " + std::to_string(step) +
-                  "; checkpoint written to " + folder + " (continue with --restart " + folder +
-                  ")");
+    throw detail::Interrupted(backend.rankIndex() != 0
+                                  ? ""
+                                  : "stopped by a signal after iteration " + std::to_string(step) +
+                                        "; checkpoint written to " + folder +
+                                        " (continue with --restart " + folder + ")");
   }
 }
 
@@ -93,7 +93,8 @@ std::uint64_t restoreCheckpoint(B &backend, Run &run, Particles &P, Columns colu
   const detail::CheckpointIdentity id = run.identity(checkpointFields(columns));
   const std::string folder = detail::resolveRestart(detail::programOptions().restartPath);
   const detail::CheckpointState saved = detail::readIndex(folder, id);
-  const std::uint64_t R = std::uint64_t(backend.rankCount()), k = std::uint64_t(backend.rankIndex());
+  const std::uint64_t R = std::uint64_t(backend.rankCount()),
+                      k = std::uint64_t(backend.rankIndex());
   std::vector<detail::Shard> shards;
   std::uint64_t local = 0;
   for (std::uint64_t s = k * saved.shards / R; s < (k + 1) * saved.shards / R; ++s) {
@@ -119,8 +120,8 @@ std::uint64_t restoreCheckpoint(B &backend, Run &run, Particles &P, Columns colu
   });
   if (backend.sumOverRanks(local) != saved.particles)
     throw detail::RunError("cannot restart from checkpoint '" + folder + "': its shards hold " +
-                           std::to_string(backend.sumOverRanks(local)) +
-                           " particles, its index " + std::to_string(saved.particles));
+                           std::to_string(backend.sumOverRanks(local)) + " particles, its index " +
+                           std::to_string(saved.particles));
   const std::uint64_t particles = backend.restore(P, cellSize);
   run.resume(saved, particles, folder,
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -73,8 +73,7 @@ public:
   bool anyRank(bool flag) const { return flag; }
   std::uint64_t sumOverRanks(std::uint64_t v) const { return v; }
   /// The particles read from a checkpoint are all real.
-  template <typename Particles, typename CellSize>
-  std::uint64_t restore(Particles &P, CellSize) {
+  template <typename Particles, typename CellSize> std::uint64_t restore(Particles &P, CellSize) {
     images_.ownAll(P.size());
     return P.size();
   }
