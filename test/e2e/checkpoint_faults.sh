@@ -1,6 +1,7 @@
 # Checkpoints refused with the reason, nothing written: a truncated shard, a
 # flipped byte, another simulation's checkpoint, a float build reading a
-# double checkpoint, a restart past --steps. And SIGTERM: the run finishes its
+# double checkpoint, a restart past --steps. wash::stop(), --checkpoint-dt and
+# --output-dt across a restart. And SIGTERM: the run finishes its
 # iteration, leaves a complete checkpoint, exits 75, and the restart
 # reproduces the uninterrupted run; a second signal ends it at once.
 #   checkpoint_faults.sh BIN [MPIEXEC]
@@ -56,6 +57,19 @@ expect_exit 0 "$s" --end-time 0.022 --checkpoint-dt 0.01 --quiet --out dt --dump
 expect_exit 0 "$s" --end-time 0.022 --quiet --out dt-r --dump dt-r.csv \
   --restart dt/checkpoints/checkpoint_000005 -- 8
 cmp -s dt.csv dt-r.csv || fail "sedov restarted from the --checkpoint-dt checkpoint differs"
+
+# --output-dt: the series by time and its next multiple continue after a restart.
+t=$bin/sim_time-serial
+expect_exit 0 "$t" --output-dt 0.05 --quiet --out odt --dump odt.csv
+expect_exit 0 "$t" --output-dt 0.05 --steps 7 --checkpoint-every 7 --quiet --out odt-r
+expect_exit 0 "$t" --output-dt 0.05 --quiet --out odt-r --dump odt-r.csv --restart odt-r/checkpoints
+cmp -s odt.csv odt-r.csv && cmp -s odt/sim_time.pvd odt-r/sim_time.pvd ||
+  fail "sim_time with --output-dt restarted at 7 differs (dump or series)"
+for f in odt/sim_time_*.vtp; do
+  step=${f##*_}
+  step=${step%%.*}
+  [ $((10#$step)) -le 7 ] || cmp -s "$f" "odt-r/${f##*/}" || fail "odt-r/${f##*/} differs"
+done
 
 # SIGTERM (on the seed, stable for long): stop after the iteration under way,
 # checkpoint, exit 75.
