@@ -81,4 +81,18 @@ TEST(Options, BadInputIsRejectedWithAMessage) {
   expectError({"sim", "--frobnicate"}, "unknown option '--frobnicate'");
   expectError({"sim", "--quiet=yes"}, "takes no value");
   expectError({"sim", "--dump="}, "expects a path");
+  expectError({"sim", "--keep-checkpoints", "0"}, "at least 1");
+  expectError({"sim", "--checkpoint-dt", "0"}, "positive simulated time");
+  expectError({"sim", "--restart="}, "expects a path");
+}
+
+TEST(Options, CheckpointOptions) {
+  auto p = parse({"sim", "--checkpoint-every", "5", "--checkpoint-dt=0.5", "--checkpoint-dir", "c",
+                  "--keep-checkpoints", "3", "--restart", "c/checkpoint_000005"});
+  EXPECT_EQ(p.options.checkpointEvery, 5u);
+  EXPECT_EQ(p.options.checkpointDt, 0.5);
+  EXPECT_EQ(p.options.checkpointDir, "c");
+  EXPECT_EQ(p.options.keepCheckpoints, 3u);
+  EXPECT_EQ(p.options.restartPath, "c/checkpoint_000005");
+  EXPECT_EQ(parse({"sim"}).options.keepCheckpoints, 2u);
 }

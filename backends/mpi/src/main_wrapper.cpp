@@ -6,6 +6,7 @@
 // output: the simulation's own prints and the run summary appear once.
 //
 //===----------------------------------------------------------------------===//
+#include <wash/detail/checkpoint.hpp>
 #include <wash/detail/entry.hpp>
 #include <wash/detail/hdf5_series.hpp>
 #include <wash/mpi/comm.hpp>
@@ -25,7 +26,8 @@ extern "C" int __wrap_main(int argc, char **argv) {
   wash::detail::hdf5Opener() = &wash::detail::openParallelHdf5Series;
   int status = wash::detail::runProgram(argc, argv, &__real_main);
   std::fflush(stdout);
-  if (status != 0 && wash::mpi::ranks() > 1)
+  // A run stopped by a signal stopped on every rank, its checkpoint complete.
+  if (status != 0 && status != wash::detail::interruptedExitStatus && wash::mpi::ranks() > 1)
     MPI_Abort(MPI_COMM_WORLD, status);
   MPI_Finalize();
   return status;

@@ -1,3 +1,4 @@
+#include <wash/detail/checkpoint.hpp>
 #include <wash/detail/entry.hpp>
 #include <wash/detail/run_output.hpp>
 #include <wash/detail/run_settings.hpp>
@@ -18,6 +19,11 @@ int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
     }
     programOptions() = parsed.options;
     return simulationMain(int(parsed.userArgv.size()) - 1, parsed.userArgv.data());
+  } catch (const Interrupted &e) {
+    std::fflush(stdout);
+    if (*e.what())
+      std::fprintf(stderr, "%s: %s\n", program.c_str(), e.what());
+    return interruptedExitStatus;
   } catch (const OptionError &e) {
     std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
     return 2;

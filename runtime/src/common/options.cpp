@@ -58,7 +58,9 @@ OutputFormat parseFormat(const std::string &text) {
 bool takesValue(const std::string &name) {
   return name == "--steps" || name == "--out" || name == "--output-every" || name == "--format" ||
          name == "--dump" || name == "--end-time" || name == "--output-dt" ||
-         name == "--vtk-encoding" || name == "--fields";
+         name == "--vtk-encoding" || name == "--fields" || name == "--checkpoint-every" ||
+         name == "--checkpoint-dt" || name == "--checkpoint-dir" ||
+         name == "--keep-checkpoints" || name == "--restart";
 }
 
 void apply(RunOptions &o, const std::string &name, const std::string &value) {
@@ -82,7 +84,20 @@ void apply(RunOptions &o, const std::string &name, const std::string &value) {
     o.vtkAscii = value == "ascii";
   } else if (name == "--fields")
     o.fields = parseFields(value);
-  if (value.empty() && (name == "--out" || name == "--dump"))
+  else if (name == "--checkpoint-every")
+    o.checkpointEvery = parseCount(name, value);
+  else if (name == "--checkpoint-dt")
+    o.checkpointDt = parseTime(name, value, /*positive=*/true);
+  else if (name == "--checkpoint-dir")
+    o.checkpointDir = value;
+  else if (name == "--keep-checkpoints") {
+    o.keepCheckpoints = parseCount(name, value);
+    if (o.keepCheckpoints == 0)
+      throw OptionError("option '--keep-checkpoints' expects at least 1");
+  } else if (name == "--restart")
+    o.restartPath = value;
+  if (value.empty() && (name == "--out" || name == "--dump" || name == "--checkpoint-dir" ||
+                        name == "--restart"))
     throw OptionError("option '" + name + "' expects a path");
 }
 
@@ -148,6 +163,14 @@ std::string usageText(const std::string &program) {
          "  --format vtk|csv   frame format: .vtp files plus a .pvd series, or .csv (default vtk)\n"
          "  --format hdf5      all frames in one <name>.h5 file, H5Part layout (Step#0, ...)\n"
          "  --dump FILE        write the final state as CSV, one row per particle sorted by id\n"
+         "  --checkpoint-every K  write a checkpoint after every K-th iteration\n"
+         "  --checkpoint-dt T  write a checkpoint whenever the simulated time crosses a\n"
+         "                     multiple of T\n"
+         "  --checkpoint-dir DIR  where checkpoints go (default: <out>/checkpoints)\n"
+         "  --keep-checkpoints N  keep the newest N complete checkpoints (default 2)\n"
+         "  --restart PATH     continue from a checkpoint (or a folder's newest complete\n"
+         "                     one); iterations count from the start of the simulation\n"
+         "                     (SIGTERM or SIGINT: finish the iteration, checkpoint, exit 75)\n"
          "  --quiet            no run header, progress line or summary\n"
          "  --help             print this text and exit\n"
          "  --                 pass everything after it to the simulation\n";

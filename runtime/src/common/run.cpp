@@ -1,9 +1,13 @@
 #include <wash/detail/processes.hpp>
 #include <wash/detail/run.hpp>
 
+#include <wash/detail/variables.hpp>
+
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <map>
 
 namespace wash::detail {
 namespace {
@@ -34,6 +38,17 @@ void checkRule(const Translation &translated, const SearchRule &rule) {
                    "; call the neighbour-rule setting unconditionally in main");
 }
 
+/// Whether `time` reached the multiple `next` of `every` (then moves `next`
+/// beyond it: a long step may cross several, and counts once).
+bool crossed(double time, double every, std::uint64_t &next) {
+  if (time < double(next) * every)
+    return false;
+  next = std::max(next, std::uint64_t(std::floor(time / every)));
+  while (double(next) * every <= time)
+    ++next;
+  return true;
+}
+
 std::string afterKernel(std::uint64_t step, const std::string &kernel) {
   return "step " + std::to_string(step) + ": after kernel '" + kernel + "': ";
 }
@@ -41,8 +56,9 @@ std::string afterKernel(std::uint64_t step, const std::string &kernel) {
 } // namespace
 
 Run::Run(const Translation &translated, bool writes)
-    : backend_(translated.backend), dimensions_(translated.dimensions),
-      useFloat_(checkedPrecision(translated, runSettings())), writes_(writes) {
+    : backend_(translated.backend), program_(identityHash(translated.program)),
+      dimensions_(translated.dimensions), useFloat_(checkedPrecision(translated, runSettings())),
+      writes_(writes) {
   const RunSettings &s = runSettings();
   const RunOptions &o = programOptions();
   checkRule(translated, s.search);
@@ -74,16 +90,93 @@ bool Run::advanceTime(std::uint64_t step) {
 }
 
 bool Run::outputTimeCrossed() {
-  if (!outputDt_)
-    return false;
-  const double time = simTime().time, every = *outputDt_;
-  if (time < double(nextOutput_) * every)
-    return false;
-  // The next multiple beyond the time (a long step may cross several: one frame).
-  nextOutput_ = std::max(nextOutput_, std::uint64_t(std::floor(time / every)));
-  while (double(nextOutput_) * every <= time)
-    ++nextOutput_;
-  return true;
+  return outputDt_ && crossed(simTime().time, *outputDt_, nextOutput_);
+}
+
+void Run::noteCheckpoint(std::uint64_t step) {
+  const RunOptions &o = programOptions();
+  const bool byTime = o.checkpointDt && crossed(simTime().time, *o.checkpointDt, nextCheckpoint_);
+  checkpointDue_ = byTime || (o.checkpointEvery && step % o.checkpointEvery == 0);
+}
+
+CheckpointIdentity Run::identity(std::vector<CheckpointField> fields) const {
+  return {runSettings().simulationName, program_, std::uint32_t(dimensions_), useFloat_,
+          std::move(fields)};
+}
+
+std::string Run::checkpointDir() const {
+  const RunOptions &o = programOptions();
+  return o.checkpointDir.empty() ? (std::filesystem::path(o.outDir) / "checkpoints").string()
+                                 : o.checkpointDir;
+}
+
+CheckpointState Run::checkpointState(std::uint64_t step, std::uint32_t shards,
+                                     std::uint64_t particles) const {
+  CheckpointState s;
+  s.iteration = step;
+  s.time = simTime().time;
+  s.timeStep = simTime().step;
+  s.timeStepSet = simTime().stepSet;
+  s.stopRequested = runSettings().stopRequested;
+  for (const auto &[name, value] : variables())
+    s.variables.emplace_back(name, value);
+  s.nextOutput = nextOutput_;
+  s.nextCheckpoint = nextCheckpoint_;
+  if (output_) {
+    s.seriesByTime = output_->seriesByTime();
+    for (const RunOutput::Written &w : output_->written())
+      if (!(lastOnlyFrame_ && w.step == lastOnlyFrame_))
+        s.frames.push_back(w);
+  }
+  s.shards = shards;
+  s.particles = particles;
+  return s;
+}
+
+void Run::checkpointWritten(const std::string &folder, std::uint64_t step, double seconds) {
+  if (writes_ && !programOptions().quiet)
+    std::printf("wash: checkpoint of iteration %llu written to %s in %.3f s\n",
+                (unsigned long long)step, folder.c_str(), seconds);
+  std::fflush(stdout);
+  stepStart_ = Clock::now();
+}
+
+std::uint64_t Run::resume(const CheckpointState &saved, std::size_t particles,
+                          const std::string &folder, double readSeconds) {
+  // The variables main added must be the checkpoint's (their values are its).
+  std::map<std::string, double> &vars = variables();
+  bool same = vars.size() == saved.variables.size();
+  for (const auto &[name, value] : saved.variables)
+    same &= vars.count(name) == 1;
+  if (!same)
+    throw RunError("cannot restart from checkpoint '" + folder +
+                   "': its variables differ from those this program adds");
+  for (const auto &[name, value] : saved.variables)
+    vars[name] = value;
+  SimTime &t = simTime();
+  t.time = saved.time;
+  t.step = saved.timeStep;
+  t.stepSet = saved.timeStepSet;
+  runSettings().stopRequested = saved.stopRequested;
+  nextOutput_ = saved.nextOutput;
+  nextCheckpoint_ = saved.nextCheckpoint;
+  if (saved.stopRequested || endTimeReached())
+    steps_ = saved.iteration; // the checkpoint's iteration was the last
+  else if (steps_ < saved.iteration)
+    throw RunError("cannot restart from checkpoint '" + folder + "' of iteration " +
+                   std::to_string(saved.iteration) + ": the run ends after iteration " +
+                   std::to_string(steps_) + " (--steps or set_max_iterations)");
+  if (output_)
+    output_->continueSeries(saved.frames, saved.seriesByTime);
+  started(particles);
+  if (writes_ && !programOptions().quiet)
+    std::printf("wash: restarting from %s, after iteration %llu (t = %.17g), read in %.3f s\n",
+                folder.c_str(), (unsigned long long)saved.iteration, saved.time, readSeconds);
+  std::fflush(stdout);
+  runStage() = {particles, saved.iteration + 1, true, steps_};
+  watchStopSignals();
+  stepStart_ = Clock::now();
+  return firstStep_ = saved.iteration + 1;
 }
 
 bool Run::frameDue(std::uint64_t step) const {
@@ -134,10 +227,11 @@ void Run::finish(const Frame &finalFrame) {
   if (!writes_ || programOptions().quiet)
     return;
   const std::uint64_t particles = runStage().particles; // finalFrame: this process's rows
-  const double particleSteps = double(steps_) * double(particles);
+  const std::uint64_t ran = steps_ >= firstStep_ ? steps_ - firstStep_ + 1 : 0; // after a restart
+  const double particleSteps = double(ran) * double(particles);
   std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); "
               "steps alone %.3f s, %.1f ns per particle-step; output in %s\n",
-              (unsigned long long)steps_, std::size_t(particles), seconds,
+              (unsigned long long)ran, std::size_t(particles), seconds,
               seconds > 0 ? particleSteps / seconds : 0.0, stepSeconds_,
               particleSteps > 0 ? stepSeconds_ * 1e9 / particleSteps : 0.0,
               output_->directory().c_str());

@@ -7,6 +7,7 @@
 // and checks around the kernels are every runtime's (wash/detail/run.hpp).
 //
 //===----------------------------------------------------------------------===//
+#include "checkpoint.hpp"
 #include "state.hpp"
 
 #include <wash/detail/neighbour_search.hpp>
@@ -156,7 +157,8 @@ void start() {
   detail::Run run(detail::Translation{.backend = "reference",
                                       .dimensions = dimensions,
                                       .floatStorage = std::nullopt,
-                                      .smoothingLengthSearch = std::nullopt},
+                                      .smoothingLengthSearch = std::nullopt,
+                                      .program = detail::referenceProgram(s)},
                   /*writes=*/true);
   // The reference checks every value after every kernel on a frame of the state.
   auto frame = [&s] {
@@ -167,19 +169,24 @@ void start() {
                                 s.particles.size(), storeBytes(s.particles));
     }
   };
-  for (const Kernel &k : s.kernels)
-    if (k.kind == Kernel::Init) {
-      runKernel(k, s, 0);
-      run.checkFinite(frame(), 0, k.name);
-    }
-  run.begin(s.particles.size(), frame);
-  for (std::uint64_t step = 1; step <= run.steps(); ++step) {
+  if (run.restarting()) { // the store and the run's state from a checkpoint
+    detail::restoreCheckpoint(run, s);
+  } else {
+    for (const Kernel &k : s.kernels)
+      if (k.kind == Kernel::Init) {
+        runKernel(k, s, 0);
+        run.checkFinite(frame(), 0, k.name);
+      }
+    run.begin(s.particles.size(), frame);
+  }
+  for (std::uint64_t step = run.firstStep(); step <= run.steps(); ++step) {
     for (const Kernel &k : s.kernels)
       if (k.kind != Kernel::Init) {
         runKernel(k, s, step);
         run.checkFinite(frame(), step, k.name);
       }
     run.endStep(step, frame); // after wash::stop(), run.steps() is this step
+    detail::checkpointAfterStep(run, s, step);
   }
   run.finish(frame());
 }

@@ -7,7 +7,7 @@
 // HEADER: #include <wash/mpi/backend.hpp>
 // HEADER: using Backend = wash::mpi::Backend<2>;
 // CHECK: wash::backend::Run run(translated, backend.writes());
-// CHECK: const std::uint64_t particles = backend.distribute(P, [&] { return run.radius(); });
+// CHECK: particles = backend.distribute(P, [&] { return run.radius(); });
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: // Neighbours read mass and pos.
 // CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(),

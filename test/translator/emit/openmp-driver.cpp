@@ -7,7 +7,8 @@
 // HEADER: #include <wash/openmp/backend.hpp>
 // HEADER: using Backend = wash::openmp::Backend<2>;
 // CHECK: const wash::backend::Translation translated{.backend = Backend::name, .dimensions = 2,
-// CHECK-NEXT: .floatStorage = false, .smoothingLengthSearch = false};
+// CHECK-NEXT: .floatStorage = false, .smoothingLengthSearch = false,
+// CHECK-NEXT: .program = "kernels: force Count; update Drift; columns:
 // CHECK-NEXT: wash::backend::Run run(translated, backend.writes());
 // CHECK: backend.forEachParticleChecked([](Index i) {
 // CHECK: ::Count(self, NeighbourList(backend.grid(), P.pos, i));

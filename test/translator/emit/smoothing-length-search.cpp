@@ -8,7 +8,7 @@
 // RUN: grep -vE '^// [A-Z-]+:' %t/mpi/smoothing-length-search.mpi.cpp | FileCheck %s --check-prefix=MPI
 // CHECK: wash::backend::NeighbourTable<3, Stored> table;
 // CHECK: table.build(backend.grid(), P.pos, P.id, P.smoothing_length, at, backend.owned());
-// CHECK: .floatStorage = false, .smoothingLengthSearch = true};
+// CHECK: .floatStorage = false, .smoothingLengthSearch = true,
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: // Neighbours read pos.
 // CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, backend.owned(), run.box(), 3, step, "Density", &Backend::combineMax), run.box(),

@@ -5,11 +5,30 @@
 
 namespace wash::tr {
 
-std::string translationText(const CodePlan &Plan) {
+std::string translationText(const CodePlan &Plan, const std::string &Program) {
   return rt::Translation +
          " translated{.backend = Backend::name, .dimensions = " + std::to_string(Plan.Dim) +
          ",\n      .floatStorage = " + (Plan.Float ? "true" : "false") +
-         ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") + "};\n";
+         ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") +
+         (Program.empty() ? "" : ",\n      .program = " + stringLiteral(Program)) + "};\n";
+}
+
+std::string programIdentityText(const Model &M, const CodePlan &Plan) {
+  std::string T = "kernels:";
+  for (const Kernel &K : M.Kernels)
+    T += " " + std::string(kernelKindName(K.Kind)) + " " + K.Function + ";";
+  T += " columns:";
+  for (const Field *F : Plan.Stored)
+    T += " " + F->Name;
+  return T;
+}
+
+void emitCheckpointColumns(std::ostream &OS, const CodePlan &Plan) {
+  OS << "/// Every stored column by name: what a checkpoint holds.\n"
+     << "const auto checkpointColumns = [](auto f) {\n";
+  for (const Field *F : Plan.Stored)
+    OS << "  f(" << stringLiteral(F->Name) << ", P." << Plan.Member.at(F->Name) << ");\n";
+  OS << "};\n\n";
 }
 
 void emitParticleBytes(std::ostream &OS, const CodePlan &Plan) {

@@ -66,7 +66,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
 void emitStart(std::ostream &OS, const Model &M, const CodePlan &Plan,
                const std::vector<std::string> &Callees) {
   OS << "void start() {\n"
-     << "  const " << translationText(Plan) << "  " << rt::Run
+     << "  const " << translationText(Plan, programIdentityText(M, Plan)) << "  " << rt::Run
      << " run(translated, backend.writes());\n";
   if (!Plan.Variables.empty()) {
     OS << "  " << rt::BindVariables << "({";
@@ -74,24 +74,30 @@ void emitStart(std::ostream &OS, const Model &M, const CodePlan &Plan,
       OS << (V ? ", &" : "&") << CodePlan::variableSlot(Plan.Variables[V]);
     OS << "});\n";
   }
+  OS << "  std::uint64_t particles = 0;\n"
+     << "  if (run.restarting()) { // the particles and the run's state from a checkpoint\n"
+     << "    particles = " << rt::RestoreCheckpoint << "(backend, run, P, checkpointColumns, "
+     << domainCellSizeText(Plan) << ");\n"
+     << "  } else {\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init)
-      OS << "  " << Callees[K] << "(); // init kernel\n";
-  OS << "  // Each process keeps its share of what the init kernels created (they\n"
-     << "  // run on every process, so they must be deterministic).\n"
-     << "  const std::uint64_t particles = backend.distribute(P, " << domainCellSizeText(Plan)
-     << ");\n";
+      OS << "    " << Callees[K] << "(); // init kernel\n";
+  OS << "    // Each process keeps its share of what the init kernels created (they\n"
+     << "    // run on every process, so they must be deterministic).\n"
+     << "    particles = backend.distribute(P, " << domainCellSizeText(Plan) << ");\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind == KernelKind::Init) {
-      emitWrap(OS, M.Kernels[K], "  ");
-      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "  ");
+      emitWrap(OS, M.Kernels[K], "    ");
+      emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "    ");
     }
-  OS << "  run.begin(particles, frame);\n"
-     << "  for (std::uint64_t step = 1; step <= run.steps(); ++step) {\n";
+  OS << "    run.begin(particles, frame);\n"
+     << "  }\n"
+     << "  for (std::uint64_t step = run.firstStep(); step <= run.steps(); ++step) {\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind != KernelKind::Init)
       emitKernel(OS, M, Plan, K, Callees[K]);
   OS << "    run.endStep(step, frame);\n"
+     << "    " << rt::CheckpointAfterStep << "(backend, run, step, particles, checkpointColumns);\n"
      << "  }\n"
      << "  run.finish(frame());\n"
      << "  backend.report(run);\n"
@@ -124,8 +130,9 @@ std::string emitDriver(const Model &M, const CodePlan &Plan,
      << rt::Frame << " frame() {\n"
      << "  " << rt::FrameBuilder << " f(" << Plan.Dim << ", P.id, &backend.owned());\n";
   emitFrameColumns(OS, Plan);
-  OS << "  return backend.gather(f.take());\n}\n"
-     << "} // namespace\n\n";
+  OS << "  return backend.gather(f.take());\n}\n\n";
+  emitCheckpointColumns(OS, Plan);
+  OS << "} // namespace\n\n";
   emitCreateParticle(OS, Plan);
   emitStart(OS, M, Plan, Callees);
   OS << "} // namespace wash_gen\n";

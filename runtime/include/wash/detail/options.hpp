@@ -28,6 +28,12 @@ struct RunOptions {
   std::optional<double> outputDt;  ///< a frame whenever the time crosses a multiple
   bool vtkAscii = false;           ///< --vtk-encoding ascii (default binary)
   std::vector<std::string> fields; ///< --fields: what frames hold (empty: everything)
+  // Checkpoints (docs/semantics.md, "Checkpoint and restart").
+  std::uint64_t checkpointEvery = 0;  ///< --checkpoint-every K (0: none by steps)
+  std::optional<double> checkpointDt; ///< --checkpoint-dt T (simulated time)
+  std::string checkpointDir;          ///< empty: <outDir>/checkpoints
+  std::uint64_t keepCheckpoints = 2;  ///< --keep-checkpoints N (at least 1)
+  std::string restartPath;            ///< --restart PATH (empty: a fresh run)
 };
 
 struct ParsedArgs {

@@ -9,6 +9,7 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include <wash/detail/checkpoint.hpp>
 #include <wash/detail/frame.hpp>
 #include <wash/detail/progress.hpp>
 #include <wash/detail/run_output.hpp>
@@ -47,6 +48,9 @@ struct Translation {
   int dimensions = 2;
   std::optional<bool> floatStorage = false;          ///< set_precision("float")
   std::optional<bool> smoothingLengthSearch = false; ///< set_smoothing_length_support
+  /// What a checkpoint must have been written by: a hash of the kernels and
+  /// columns (the reference's is made from its kernels and forces).
+  std::string program = "";
 };
 
 class Run {
@@ -74,7 +78,10 @@ public:
     reserve(first);
     if (frameDue(0) || outputTimeCrossed())
       write(0, first);
+    if (programOptions().checkpointDt) // multiples after the start time
+      nextCheckpoint_ = std::uint64_t(simTime().time / *programOptions().checkpointDt) + 1;
     runStage().step = 1;
+    watchStopSignals();
     stepStart_ = Clock::now();
   }
   /// After every kernel of a step.
@@ -85,14 +92,43 @@ public:
     const bool timeFrame = advanceTime(step);
     if (runSettings().stopRequested || endTimeReached())
       runStage().steps = steps_ = step; // this step is the last, and written as such
-    if (frameDue(step) || timeFrame)
+    noteCheckpoint(step);
+    if (frameDue(step) || timeFrame) {
       write(step, built(frame));
+      // A frame written only because the step is the last is no frame of a
+      // longer run: a checkpoint leaves it out of the series.
+      const std::uint64_t every = programOptions().outputEvery;
+      lastOnlyFrame_ = timeFrame || (every && step % every == 0) ? 0 : step;
+    }
     if (progress_)
       progress_->update(step, simTime().time);
     runStage().step = step + 1;
     stepStart_ = Clock::now();
   }
   void finish(const Frame &finalFrame);
+
+  // Checkpoint and restart (wash/detail/checkpoint.hpp; the backends' and the
+  // reference's start() write and read the particles).
+  bool restarting() const { return !programOptions().restartPath.empty(); }
+  /// The first step of the loop: 1, or the one after a checkpoint's.
+  std::uint64_t firstStep() const { return firstStep_; }
+  /// This program's identity, with the columns it stores.
+  CheckpointIdentity identity(std::vector<CheckpointField> fields) const;
+  /// Instead of begin(), after the particles were read from `folder`: the
+  /// state of `saved` restored, the header printed. Returns the first step.
+  std::uint64_t resume(const CheckpointState &saved, std::size_t particles,
+                       const std::string &folder, double readSeconds);
+  /// Whether --checkpoint-every or --checkpoint-dt asks for one after the
+  /// step endStep just ended.
+  bool checkpointDue() const { return checkpointDue_; }
+  /// Where checkpoints go: --checkpoint-dir, else <out>/checkpoints.
+  std::string checkpointDir() const;
+  /// The state after `step`, for the index (on the writing process).
+  CheckpointState checkpointState(std::uint64_t step, std::uint32_t shards,
+                                  std::uint64_t particles) const;
+  /// Says where the checkpoint went and how long it took (writing run, not
+  /// --quiet); that time is not counted as the steps'.
+  void checkpointWritten(const std::string &folder, std::uint64_t step, double seconds);
   /// Prints one more line of the end-of-run summary (writing run, not --quiet).
   void report(const std::string &line) const;
 
@@ -130,6 +166,7 @@ private:
   bool outputTimeCrossed();
   bool endTimeReached() const { return endTime_ && simTime().time >= *endTime_; }
   bool frameDue(std::uint64_t step) const;
+  void noteCheckpoint(std::uint64_t step);
   void reserve(const Frame &frame);
   void write(std::uint64_t step, const Frame &frame);
   template <typename T> static double firstBad(const T &v) { return double(v); }
@@ -147,13 +184,17 @@ private:
   [[noreturn]] void failWith(std::uint64_t step, const char *kernel, const char *field,
                              std::uint64_t id, double value) const;
 
-  std::string backend_;
+  std::string backend_, program_;
   int dimensions_;
   bool useFloat_, writes_;
   std::uint64_t steps_ = 0;
   double radius_ = 0.0;
   std::optional<double> endTime_, outputDt_;
-  std::uint64_t nextOutput_ = 0; ///< the multiple of outputDt_ the next time frame waits for
+  std::uint64_t nextOutput_ = 0;     ///< the multiple of outputDt_ the next time frame waits for
+  std::uint64_t nextCheckpoint_ = 0; ///< the same for --checkpoint-dt
+  bool checkpointDue_ = false;
+  std::uint64_t firstStep_ = 1;
+  std::uint64_t lastOnlyFrame_ = 0; ///< a step whose frame was written only as the last
   std::unique_ptr<RunOutput> output_;
   std::unique_ptr<Progress> progress_;
   // The steps' own time, frames written excluded: what the summary reports

@@ -96,17 +96,26 @@ public:
 
   const std::string &directory() const { return options_.outDir; }
 
+  /// A frame of the .pvd series; a checkpoint saves the series so far, and a
+  /// restarted run continues it.
+  struct Written {
+    std::uint64_t step;
+    double time;
+    std::string file;
+  };
+  const std::vector<Written> &written() const { return written_; }
+  bool seriesByTime() const { return seriesByTime_; }
+  void continueSeries(std::vector<Written> written, bool seriesByTime) {
+    written_ = std::move(written);
+    seriesByTime_ = seriesByTime;
+  }
+
 private:
   std::string framePath(std::uint64_t step) const;
   std::string probePath() const;
 
   RunOptions options_;
   std::string baseName_;
-  struct Written {
-    std::uint64_t step;
-    double time;
-    std::string file;
-  };
   std::vector<Written> written_;
   bool seriesByTime_ = false;
   bool root_;                        ///< writes the CSV, VTK and dump files

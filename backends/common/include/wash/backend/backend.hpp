@@ -96,6 +96,17 @@ concept ParticleBackend =
       { cb.gather(frame) } -> std::same_as<detail::Frame>;
       /// The backend's own lines of the end-of-run summary.
       cb.report(run);
+      /// Checkpoints (checkpoint.hpp): this process's shard number and the
+      /// count, collectives over the processes, and after a restart the
+      /// particles read moved to their owners (returns how many in all).
+      { cb.rankIndex() } -> std::same_as<int>;
+      { cb.rankCount() } -> std::same_as<int>;
+      cb.barrier();
+      { cb.anyRank(true) } -> std::same_as<bool>;
+      { cb.sumOverRanks(std::uint64_t(1)) } -> std::same_as<std::uint64_t>;
+      {
+        b.restore(P, [] { return 1.0; })
+      } -> std::same_as<std::uint64_t>;
     };
 
 } // namespace wash::backend

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <wash/backend/cell_grid.hpp>
+#include <wash/backend/checkpoint.hpp>
 #include <wash/backend/columns.hpp>
 #include <wash/backend/frame_builder.hpp>
 #include <wash/backend/neighbour_table.hpp>

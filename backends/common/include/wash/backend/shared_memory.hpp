@@ -65,6 +65,18 @@ public:
     return reduceById(ids, values, images_.owned, op);
   }
   static double combineMax(double v) { return v; }
+
+  // Checkpoint and restart (wash/backend/checkpoint.hpp): one process.
+  int rankIndex() const { return 0; }
+  int rankCount() const { return 1; }
+  void barrier() const {}
+  bool anyRank(bool flag) const { return flag; }
+  std::uint64_t sumOverRanks(std::uint64_t v) const { return v; }
+  /// The particles read from a checkpoint are all real.
+  template <typename Particles, typename CellSize> std::uint64_t restore(Particles &P, CellSize) {
+    images_.ownAll(P.size());
+    return P.size();
+  }
   detail::Frame gather(detail::Frame local) const { return local; }
   void report(const Run &) const {}
 

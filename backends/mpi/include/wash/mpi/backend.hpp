@@ -70,6 +70,29 @@ public:
   /// 0 in bounded chunks for CSV and VTK, by each rank itself for HDF5.
   ::wash::detail::Frame gather(::wash::detail::Frame local) const { return local; }
 
+  // Checkpoint and restart (wash/backend/checkpoint.hpp): collective.
+  int rankIndex() const { return rank(); }
+  int rankCount() const { return ranks(); }
+  void barrier() const { allreduceSum(std::uint64_t(0)); }
+  bool anyRank(bool flag) const { return allreduceMax(std::uint64_t(flag)) != 0; }
+  std::uint64_t sumOverRanks(std::uint64_t v) const { return allreduceSum(v); }
+  /// The particles this rank read from a checkpoint (any share) go to their
+  /// owners, on a domain balanced by a sample of every rank's cells.
+  template <typename Particles, typename CellSize>
+  std::uint64_t restore(Particles &P, CellSize cellSize) {
+    halo_.ownAll(P.size());
+    // cellSize() sees this rank's particles only (at the start every rank has
+    // all of them): the largest over the ranks that have some.
+    const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
+    domain_.setCellSize(largest > 0.0 ? largest : 1.0);
+    std::vector<std::uint64_t> keys(P.size());
+    for (Index i = 0; i < P.size(); ++i)
+      keys[i] = domain_.keyAt(P.pos[i]);
+    domain_.balance(std::move(keys), double(P.size()));
+    migrate(P, domain_, halo_);
+    return allreduceSum(std::uint64_t(halo_.owned.size()));
+  }
+
   /// Collective: the traffic of the run, per step, over all ranks.
   void report(const backend::Run &run) const {
     const std::uint64_t steps = run.steps() ? run.steps() : 1;

@@ -21,7 +21,15 @@ std::string stringLiteral(const std::string &S);
 
 /// `Translation translated{...};`: what the program was translated for, every
 /// member named.
-std::string translationText(const CodePlan &Plan);
+std::string translationText(const CodePlan &Plan, const std::string &Program = "");
+
+/// What a checkpoint must have been written by (Translation::program): the
+/// kernels in order and the stored columns, never the backend, so that every
+/// backend's program restarts every other's checkpoints.
+std::string programIdentityText(const Model &M, const CodePlan &Plan);
+
+/// `checkpointColumns`: calls f(name, column) for every stored column.
+void emitCheckpointColumns(std::ostream &OS, const CodePlan &Plan);
 
 /// `particleBytes`: the size of one particle in the stored columns.
 void emitParticleBytes(std::ostream &OS, const CodePlan &Plan);
