@@ -12,7 +12,7 @@ mpiexec=$1 bin=$2 example=${3:-ca_fluid_sim} steps=${4:-20}
 skip() { echo "two hosts: $*; skipped"; exit 77; }
 [ "$(id -u)" -eq 0 ] || skip "network namespaces need root"
 command -v ip >/dev/null || skip "no 'ip' command (iproute2)"
-"$mpiexec" --version 2>/dev/null | grep -q "Open MPI" || skip "$mpiexec is not Open MPI's (its --mca options)"
+"$mpiexec" --version 2>/dev/null | grep -qE "Open MPI|OpenRTE" || skip "$mpiexec is not Open MPI's (its --mca options)"
 
 ns_a=wash-a-$$ ns_b=wash-b-$$
 addr_a=10.213.0.1 addr_b=10.213.0.2
