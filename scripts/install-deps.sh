@@ -17,6 +17,8 @@ packages=(
   # --format hdf5: serial HDF5 (reference, serial, openmp), parallel HDF5 over
   # Open MPI (mpi backend), and h5py for the HDF5 tests and scripts/wash_read.py.
   libhdf5-dev libhdf5-openmpi-dev python3-h5py
+  # ip netns / veth for the two-host MPI test (test/e2e/two_hosts.sh).
+  iproute2
 )
 
 missing=()
