@@ -131,6 +131,7 @@ detail::Frame gatherFrame(const detail::Frame &local) {
   };
   detail::Frame all;
   all.dimensions = local.dimensions;
+  all.typeNames = local.typeNames; // every rank's are the same
   all.ids = gather(local.ids);
   for (const detail::Column &c : local.columns)
     all.columns.push_back({c.name, c.components, gather(c.values), c.inDump});

@@ -157,13 +157,18 @@ void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &opti
       << "<VTKFile type=\"PolyData\" version=\"" << (appended ? "1.0" : "0.1")
       << "\" byte_order=\"LittleEndian\"" << (appended ? " header_type=\"UInt64\"" : "") << ">\n"
       << "  <PolyData>\n";
-  if (options.time) {
+  if (options.time || !frame.typeNames.empty()) {
     Text buf;
-    out << "    <FieldData>\n"
-        << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-           "format=\"ascii\">"
-        << exact(*options.time, buf) << "</DataArray>\n"
-        << "    </FieldData>\n";
+    out << "    <FieldData>\n";
+    if (options.time)
+      out << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+             "format=\"ascii\">"
+          << exact(*options.time, buf) << "</DataArray>\n";
+    // A typed simulation: type_<name> holds the index its "type" column uses.
+    for (std::size_t t = 0; t < frame.typeNames.size(); ++t)
+      out << "      <DataArray type=\"Int64\" Name=\"type_" << frame.typeNames[t]
+          << "\" NumberOfTuples=\"1\" format=\"ascii\">" << t << "</DataArray>\n";
+    out << "    </FieldData>\n";
   }
   out << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\">\n"
       << "      <Points>\n";
