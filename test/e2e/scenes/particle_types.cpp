@@ -94,6 +94,7 @@ int main() {
     wash::add_particle_type("fluid");
     wash::add_particle_type(Wall);
     wash::add_particle_type("sediment");
+    wash::set_simulation_name("particle_types");
     wash::set_influence_radius(radius);
     wash::add_force("age", 1);
     wash::add_init_kernel(&Build);
