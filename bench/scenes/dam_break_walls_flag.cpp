@@ -49,7 +49,8 @@ double dW(double r) { // dW/dr
     return sigma * (-3.0 * q + 2.25 * q * q) / h;
 }
 
-double Pressure(double rho) { return rho0 * c0 * c0 / 7.0 * (std::pow(rho / rho0, 7.0) - 1.0); }
+// A linear equation of state: p = c0^2 (rho - rho0).
+double Pressure(double rho) { return c0 * c0 * (rho - rho0); }
 
 bool IsWall(const wash::Particle& p) { return p.get_force_scalar("wall") > 0.5; }
 
