@@ -7,6 +7,7 @@
 // bench/particle_types.sh runs the two side by side.
 #include <wash/wash.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -51,8 +52,8 @@ double dW(double r) { // dW/dr
     return sigma * (-3.0 * q + 2.25 * q * q) / h;
 }
 
-// A linear equation of state: p = c0^2 (rho - rho0).
-double Pressure(double rho) { return c0 * c0 * (rho - rho0); }
+// A linear equation of state without tension: p = max(0, c0^2 (rho - rho0)).
+double Pressure(double rho) { return std::max(0.0, c0 * c0 * (rho - rho0)); }
 
 void Density(wash::Particle& p, const std::vector<wash::Particle>& ns) {
     double rho = p.get_mass() * W(0.0);
