@@ -61,6 +61,13 @@ const Field *Model::findField(const std::string &Name) const {
   return nullptr;
 }
 
+int Model::typeIndex(const std::string &Name) const {
+  for (unsigned T = 0; T < Types.size(); ++T)
+    if (Types[T].Name == Name)
+      return int(T);
+  return -1;
+}
+
 bool Model::hasErrors() const {
   return std::any_of(Findings.begin(), Findings.end(),
                      [](const Finding &F) { return diagLevel(F.Id) == DiagLevel::Error; });

@@ -1,5 +1,6 @@
 //===- ModelDump.cpp ------------------------------------------------------===//
 #include "wash/translator/ModelDump.h"
+#include "wash/translator/Analysis/ParticleTypes.h"
 
 namespace wash::tr {
 
@@ -54,6 +55,26 @@ static const char *originName(FieldOrigin O) {
   return "?";
 }
 
+/// The names of the types in S, or "-".
+static std::string typeNames(const Model &M, const std::set<unsigned> &S) {
+  std::string N;
+  for (unsigned T : S)
+    N += (N.empty() ? "" : " ") + M.Types[T].Name;
+  return N.empty() ? "-" : N;
+}
+
+/// A typed simulation's field: the types kernels read and write it for, and
+/// those they never read it for (its column is not needed for them).
+static void printFieldTypes(const Model &M, std::ostream &OS, const FieldTypeUse &U) {
+  std::set<unsigned> Unread;
+  for (unsigned T = 0; T < M.Types.size(); ++T)
+    if (!U.ReadFor.count(T))
+      Unread.insert(T);
+  OS << "    read-for: " << typeNames(M, U.ReadFor)
+     << "; written-for: " << typeNames(M, U.WrittenFor)
+     << "; never-read-for: " << typeNames(M, Unread) << '\n';
+}
+
 void dumpModel(const Model &M, std::ostream &OS) {
   OS << "simulation\n";
   OS << "  precision: " << M.Sim.Precision << '\n';
@@ -64,6 +85,14 @@ void dumpModel(const Model &M, std::ostream &OS) {
   printNames(OS, "simulation-name", M.Sim.SimulationNames);
   printNames(OS, "output-file-name", M.Sim.OutputFileNames);
   OS << "  starts: " << (M.Sim.CallsStart ? "yes" : "no") << '\n';
+
+  if (M.typed()) {
+    OS << "particle-types:";
+    for (unsigned T = 0; T < M.Types.size(); ++T)
+      OS << ' ' << T << '=' << M.Types[T].Name << " @" << pos(M.Types[T].Pos);
+    OS << '\n';
+  }
+  const std::map<std::string, FieldTypeUse> TypeUses = fieldTypeUses(M.Types, M.Kernels);
 
   OS << "fields\n";
   for (const Field &F : M.Fields) {
@@ -78,6 +107,10 @@ void dumpModel(const Model &M, std::ostream &OS) {
     if (F.Origin != FieldOrigin::Builtin)
       OS << " @" << pos(F.Pos);
     OS << '\n';
+    if (M.typed()) {
+      auto It = TypeUses.find(F.Name);
+      printFieldTypes(M, OS, It == TypeUses.end() ? FieldTypeUse{} : It->second);
+    }
   }
 
   OS << "kernels\n";
@@ -85,6 +118,10 @@ void dumpModel(const Model &M, std::ostream &OS) {
     const Kernel &K = M.Kernels[I];
     OS << "  " << I << ": " << kernelKindName(K.Kind) << ' ' << K.Function << " @" << pos(K.Pos)
        << '\n';
+    if (M.typed() && K.Kind != KernelKind::Init && K.Kind != KernelKind::Void)
+      OS << "    particle-type: " << (K.ParticleType.empty() ? "all" : K.ParticleType) << '\n';
+    if (M.typed() && K.Kind == KernelKind::Force)
+      OS << "    neighbour-type: " << (K.NeighbourType.empty() ? "all" : K.NeighbourType) << '\n';
     printSet(M, OS, "own-reads", K.OwnReads);
     printSet(M, OS, "own-writes", K.OwnWrites);
     if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)

@@ -136,7 +136,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   storeAccessSets(M, summariseAccesses(M.Kernels, M.searchesBySmoothingLength()));
   if (Stop(PassId::SummariseAccesses))
     return;
-  storeFields(M, resolveFields(M.Sim.Dimension, M.Forces, M.Kernels));
+  storeFields(M, resolveFields(M.Sim.Dimension, M.Forces, M.Kernels, M.typed()));
   if (Stop(PassId::ResolveFields))
     return;
   storeLiveness(M, computeLiveness(M.Fields, M.Kernels));

@@ -39,6 +39,8 @@ std::vector<ParticleAccessor> makeAccessors() {
   }
 #define WASH_FORCE_ACCESSOR(Method, How, Kind)                                                     \
   A.push_back({#Method, nullptr, Mode::How, ForceKind::Kind});
+#define WASH_TYPE_ACCESSOR(Method, How)                                                            \
+  A.push_back({#Method, nullptr, Mode::How, ForceKind::Scalar, /*IsType=*/true});
 #include "wash/translator/WashApi.def"
   return A;
 }

@@ -69,6 +69,13 @@ public:
   void set_force_vector(const std::string &name, const ParticleVec &value,
                         Location loc = Location::current());
 
+  /// Particle types (wash::add_particle_type; docs/semantics.md): whether this
+  /// particle, itself or a neighbour, is of type `name`.
+  bool is_type(const std::string &name, Location loc = Location::current()) const;
+  /// Makes this particle one of type `name`: from init kernels, and from
+  /// update kernels on their own particle.
+  void set_type(const std::string &name, Location loc = Location::current());
+
   /// A handle on particle `index` of `store`; a neighbour across a periodic
   /// face also carries the image's position.
   Particle(detail::ParticleStore *store, std::size_t index, const ParticleVec *image = nullptr)
@@ -95,19 +102,29 @@ enum class Reduction { Sum, Min, Max };
 void add_force(const std::string &name, int dim,
                CallSite loc = CallSite::current());
 
+/// Adds a particle type (in main, before start). The first one added is the
+/// type of every particle create_particle makes; a type's index in output is
+/// its position in the order of these calls.
+void add_particle_type(const std::string &name, CallSite loc = CallSite::current());
+
 /// Kernels run in registration order: init kernels once, then every iteration
 /// each update kernel (per particle) and force kernel (per particle, with its
-/// neighbours) in the order they were added.
+/// neighbours) in the order they were added. A particle type restricts a
+/// kernel to the particles of that type ("" = every particle); a force
+/// kernel's neighbour type keeps only the neighbours of that type.
 void add_init_kernel(InitKernel kernel);
-void add_update_kernel(UpdateKernel kernel);
-void add_force_kernel(ForceKernel kernel);
+void add_update_kernel(UpdateKernel kernel, const std::string &type = "",
+                       CallSite loc = CallSite::current());
+void add_force_kernel(ForceKernel kernel, const std::string &type = "",
+                      const std::string &neighbourType = "", CallSite loc = CallSite::current());
 /// A kernel run once per iteration at its place in the order, for no particle
 /// (to update global variables, say).
 void add_void_kernel(VoidKernel kernel);
 /// A kernel run once per iteration at its place in the order: `variable` (added
-/// with add_variable) becomes the Sum, Min or Max over all particles of f(p).
+/// with add_variable) becomes the Sum, Min or Max over all particles of f(p),
+/// or over the particles of `type`.
 void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
-                          CallSite loc = CallSite::current());
+                          const std::string &type = "", CallSite loc = CallSite::current());
 
 /// Adds a particle (only from an init kernel). The reference stays valid until
 /// the next create_particle call.

@@ -249,7 +249,7 @@ void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional
     hdf5_->write(step, time.value_or(0.0), frame, hdf5Datasets(columns));
     return;
   }
-  const VtpOptions vtp{.ascii = options_.vtkAscii, .time = time};
+  const VtpOptions vtp{.ascii = options_.vtkAscii, .time = time, .typeNames = frame.typeNames};
   if (const Processes *p = spread()) {
     auto write = [&](std::ostream *out) {
       if (options_.format == OutputFormat::Vtk)

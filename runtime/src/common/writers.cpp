@@ -171,7 +171,8 @@ void vtpArrayValues(const Frame &frame, const VtpArray &array, std::size_t begin
 }
 
 void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time) {
-  writeVtp(frame, frameColumns(frame, {}), VtpOptions{.ascii = true, .time = time}, out);
+  writeVtp(frame, frameColumns(frame, {}),
+           VtpOptions{.ascii = true, .time = time, .typeNames = frame.typeNames}, out);
 }
 
 void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &options,
@@ -198,13 +199,18 @@ void writeVtp(std::uint64_t n, const std::vector<VtpArray> &arrays, const VtpOpt
       << "<VTKFile type=\"PolyData\" version=\"" << (binary ? "1.0" : "0.1")
       << "\" byte_order=\"LittleEndian\"" << (binary ? " header_type=\"UInt64\"" : "") << ">\n"
       << "  <PolyData>\n";
-  if (options.time) {
+  if (options.time || !options.typeNames.empty()) {
     Text buf;
-    out << "    <FieldData>\n"
-        << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
-           "format=\"ascii\">"
-        << exact(*options.time, buf) << "</DataArray>\n"
-        << "    </FieldData>\n";
+    out << "    <FieldData>\n";
+    if (options.time)
+      out << "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+             "format=\"ascii\">"
+          << exact(*options.time, buf) << "</DataArray>\n";
+    // A typed simulation: type_<name> holds the index its "type" column uses.
+    for (std::size_t t = 0; t < options.typeNames.size(); ++t)
+      out << "      <DataArray type=\"Int64\" Name=\"type_" << options.typeNames[t]
+          << "\" NumberOfTuples=\"1\" format=\"ascii\">" << t << "</DataArray>\n";
+    out << "    </FieldData>\n";
   }
   out << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n << "\">\n"
       << "      <Points>\n";

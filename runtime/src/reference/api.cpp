@@ -10,6 +10,8 @@
 #include <cxxabi.h>
 #include <dlfcn.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -58,23 +60,48 @@ void add_force(const std::string &name, int dim, CallSite loc) {
   state().forces.back().registered = true;
 }
 
+void add_particle_type(const std::string &name, CallSite loc) {
+  auto &s = state();
+  if (s.started)
+    usageError(loc, "particle type '" + name + "' was added after start()");
+  // Type names go into generated code and output files: identifiers only.
+  const bool identifier =
+      !name.empty() && !std::isdigit((unsigned char)name[0]) &&
+      std::all_of(name.begin(), name.end(), [](char c) { return std::isalnum((unsigned char)c) || c == '_'; });
+  if (!identifier)
+    usageError(loc, "particle type name '" + name +
+                        "' is not an identifier ([A-Za-z_][A-Za-z0-9_]*)");
+  for (const std::string &t : s.types)
+    if (t == name)
+      usageError(loc, "particle type '" + name + "' is already added");
+  s.types.push_back(name);
+}
+
 void add_init_kernel(InitKernel kernel) {
   addKernel(detail::Kernel::Init, reinterpret_cast<void *>(kernel), "init");
 }
-void add_update_kernel(UpdateKernel kernel) {
+void add_update_kernel(UpdateKernel kernel, const std::string &type, CallSite loc) {
+  const int t = state().kernelType(type, loc);
   addKernel(detail::Kernel::Update, reinterpret_cast<void *>(kernel), "update");
+  state().kernels.back().type = t;
 }
-void add_force_kernel(ForceKernel kernel) {
+void add_force_kernel(ForceKernel kernel, const std::string &type,
+                      const std::string &neighbourType, CallSite loc) {
+  const int t = state().kernelType(type, loc), n = state().kernelType(neighbourType, loc);
   addKernel(detail::Kernel::ForceKind, reinterpret_cast<void *>(kernel), "force");
+  state().kernels.back().type = t;
+  state().kernels.back().neighbourType = n;
 }
 void add_void_kernel(VoidKernel kernel) {
   addKernel(detail::Kernel::Void, reinterpret_cast<void *>(kernel), "void");
 }
 void add_reduction_kernel(ReductionKernel kernel, Reduction op, const std::string &variable,
-                          CallSite loc) {
+                          const std::string &type, CallSite loc) {
   if (variable != detail::timeStepTarget)
     get_variable(variable, loc); // it must exist
+  const int t = state().kernelType(type, loc);
   addKernel(detail::Kernel::ReductionKind, reinterpret_cast<void *>(kernel), "reduction");
+  state().kernels.back().type = t;
   state().kernels.back().reduceOp = int(op);
   state().kernels.back().variable = variable;
 }
@@ -95,10 +122,12 @@ Particle &create_particle(double density, double mass, double smoothingLength,
     store.density.push_back(s.store(density));
     store.mass.push_back(s.store(mass));
     store.smoothingLength.push_back(s.store(smoothingLength));
+    store.type.push_back(0); // the first type added
   } catch (const std::bad_alloc &) {
     // The builtin columns; forces are allocated when first written.
     const std::size_t bytesEach =
-        sizeof(std::uint64_t) + 3 * sizeof(ParticleVec) + 3 * sizeof(double);
+        sizeof(std::uint64_t) + 3 * sizeof(ParticleVec) + 3 * sizeof(double) +
+        sizeof(std::uint32_t);
     throw detail::outOfMemory("the particle store (create_particle)", index + 1, bytesEach);
   }
   static Particle created(nullptr, 0);

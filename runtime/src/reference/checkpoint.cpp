@@ -50,6 +50,8 @@ std::vector<CheckpointField> fields(const State &s) {
                                       {"density", 8},
                                       {"mass", 8},
                                       {"smoothing_length", 8}};
+  if (!s.types.empty()) // a typed simulation: each particle's type
+    out.push_back({"type", std::uint32_t(sizeof(std::uint32_t))});
   for (const Force &f : s.forces)
     if (f.registered)
       out.push_back({forceColumn(f), std::uint32_t(f.isVector ? sizeof(ParticleVec) : 8)});
@@ -69,6 +71,8 @@ void write(Run &run, const State &s, std::uint64_t step) {
                    columnOf("density", p.density, n),
                    columnOf("mass", p.mass, n),
                    columnOf("smoothing_length", p.smoothingLength, n)};
+  if (!s.types.empty())
+    shard.columns.push_back(columnOf("type", p.type, n));
   static const std::vector<double> noScalars;
   static const std::vector<ParticleVec> noVectors;
   for (const Force &f : s.forces)
@@ -127,6 +131,8 @@ void restoreCheckpoint(Run &run, State &s) {
     fill(p.density, shard, "density", folder);
     fill(p.mass, shard, "mass", folder);
     fill(p.smoothingLength, shard, "smoothing_length", folder);
+    if (!s.types.empty())
+      fill(p.type, shard, "type", folder);
     // Forces created on first use are created here, as the kernels did.
     for (const Shard::Column &c : shard.columns) {
       const std::string &name = c.field.name;

@@ -54,6 +54,17 @@ void Particle::set_smoothing_length(double h, Location loc) {
   store_->smoothingLength[index_] = state().store(h);
 }
 
+bool Particle::is_type(const std::string &name, Location loc) const {
+  return store_->type[index_] == state().typeIndex(name, loc);
+}
+void Particle::set_type(const std::string &name, Location loc) {
+  checkWritable(store_, "set_type", loc);
+  if (!state().typesSettable)
+    detail::usageError(loc, "'set_type' outside an init or update kernel; a particle's type is "
+                            "set only by init kernels and update kernels");
+  store_->type[index_] = state().typeIndex(name, loc);
+}
+
 namespace {
 
 /// Column `slot` of `columns`, grown to the store's size (new entries zero).

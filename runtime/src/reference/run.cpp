@@ -30,6 +30,7 @@ namespace {
 /// The bytes of one particle in `store`, every column counted.
 std::size_t storeBytes(const detail::ParticleStore &store) {
   return sizeof(std::uint64_t) + 3 * sizeof(ParticleVec) + 3 * sizeof(double) +
+         sizeof(std::uint32_t) +
          store.scalars.size() * sizeof(double) + store.vectors.size() * sizeof(ParticleVec);
 }
 
@@ -57,8 +58,16 @@ double cellSize(const detail::SearchRule &rule, const detail::ParticleStore &sna
   return largest > 0.0 ? largest : 1.0; // any cell size finds coincident particles
 }
 
-void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, const detail::SearchRule &rule,
-                    const detail::Box &box, const std::string &where) {
+/// Whether particle i of `store` is of kernel type t (-1: every type).
+bool ofType(const detail::ParticleStore &store, std::size_t i, int t) {
+  return t < 0 || store.type[i] == std::uint32_t(t);
+}
+
+/// Particle i's neighbours are those of the canonical list that are of the
+/// kernel's neighbour type, in the same order (docs/semantics.md).
+void runForceKernel(ForceKernel kernel, const Kernel &k, detail::ParticleStore &live,
+                    const detail::SearchRule &rule, const detail::Box &box,
+                    const std::string &where) {
   detail::ParticleStore snapshot;
   detail::CellList<dimensions> cells;
   try {
@@ -76,6 +85,8 @@ void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, const detai
   std::vector<ParticleVec> images;
   std::vector<Particle> neighbours;
   for (std::size_t i = 0; i < live.size(); ++i) {
+    if (!ofType(live, i, k.type))
+      continue;
     const double radius = searchRadius(rule, snapshot, i);
     if (box.anyPeriodic())
       cells.periodicNeighbours(i, radius, rule.perParticle(), box, indices, images,
@@ -83,8 +94,9 @@ void runForceKernel(ForceKernel kernel, detail::ParticleStore &live, const detai
     else
       cells.neighbours(i, radius, rule.perParticle(), indices);
     neighbours.clear();
-    for (std::size_t k = 0; k < indices.size(); ++k) // const: read-only
-      neighbours.emplace_back(&snapshot, indices[k], box.anyPeriodic() ? &images[k] : nullptr);
+    for (std::size_t n = 0; n < indices.size(); ++n) // const: read-only
+      if (ofType(snapshot, indices[n], k.neighbourType))
+        neighbours.emplace_back(&snapshot, indices[n], box.anyPeriodic() ? &images[n] : nullptr);
     Particle self(&live, i);
     kernel(self, neighbours);
   }
@@ -103,15 +115,19 @@ void wrapPositions(detail::State &s, const detail::Box &box) {
 void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
   switch (k.kind) {
   case Kernel::Init:
-    s.inInitKernel = true;
+    s.inInitKernel = s.typesSettable = true;
     reinterpret_cast<InitKernel>(k.function)();
-    s.inInitKernel = false;
+    s.inInitKernel = s.typesSettable = false;
     break;
   case Kernel::Update:
+    s.typesSettable = true;
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
+      if (!ofType(s.particles, i, k.type))
+        continue;
       Particle self(&s.particles, i);
       reinterpret_cast<UpdateKernel>(k.function)(self);
     }
+    s.typesSettable = false;
     break;
   case Kernel::Void:
     s.inVoidKernel = true;
@@ -121,7 +137,8 @@ void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
   case Kernel::ReductionKind: {
     std::vector<double> values; // storage order is id order in the reference
     for (std::size_t i = 0; i < s.particles.size(); ++i)
-      values.push_back(reinterpret_cast<ReductionKernel>(k.function)(Particle(&s.particles, i)));
+      if (ofType(s.particles, i, k.type))
+        values.push_back(reinterpret_cast<ReductionKernel>(k.function)(Particle(&s.particles, i)));
     const double reduced = detail::reduceInIdOrder(values, detail::ReduceOp(k.reduceOp));
     if (k.variable == detail::timeStepTarget)
       detail::setReducedTimeStep(reduced);
@@ -130,7 +147,7 @@ void runKernel(const Kernel &k, detail::State &s, std::uint64_t step) {
     break;
   }
   case Kernel::ForceKind:
-    runForceKernel(reinterpret_cast<ForceKernel>(k.function), s.particles, runSettings().search,
+    runForceKernel(reinterpret_cast<ForceKernel>(k.function), k, s.particles, runSettings().search,
                    runSettings().box,
                    "step " + std::to_string(step) + ": kernel '" + k.name + "': ");
     break;

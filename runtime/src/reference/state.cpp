@@ -49,6 +49,20 @@ const Force &State::force(const std::string &name, bool isVector, const CallSite
   return forces.back();
 }
 
+std::uint32_t State::typeIndex(const std::string &name, const CallSite &loc) const {
+  for (std::size_t t = 0; t < types.size(); ++t)
+    if (types[t] == name)
+      return std::uint32_t(t);
+  usageError(loc, types.empty() ? "particle type '" + name +
+                                      "' is unknown: no particle type was added "
+                                      "(wash::add_particle_type)"
+                                : "particle type '" + name + "' is unknown");
+}
+
+int State::kernelType(const std::string &name, const CallSite &loc) const {
+  return name.empty() ? -1 : int(typeIndex(name, loc));
+}
+
 namespace {
 
 void addScalar(Frame &frame, const std::string &name, const std::vector<double> &values,
@@ -98,6 +112,11 @@ Frame State::frame(const ParticleStore &store) const {
     else
       addScalar(frame, f->name, f->slot < store.scalars.size() ? store.scalars[f->slot] : noScalars,
                 n);
+  }
+  if (!types.empty()) {
+    std::vector<double> type(store.type.begin(), store.type.end());
+    addScalar(frame, "type", type, n);
+    frame.typeNames = types;
   }
   return frame;
 }

@@ -23,6 +23,8 @@ struct ParticleStore {
   std::vector<std::uint64_t> id;
   std::vector<ParticleVec> pos, vel, acc;
   std::vector<double> density, mass, smoothingLength;
+  /// Each particle's type: an index into State::types (0 when there are none).
+  std::vector<std::uint32_t> type;
   /// Force columns by slot; a column shorter than the store reads as zeros.
   std::vector<std::vector<double>> scalars;
   std::vector<std::vector<ParticleVec>> vectors;
@@ -45,15 +47,22 @@ struct Kernel {
   std::string name;     ///< from the symbol table, for messages
   int reduceOp = 0;     ///< reduction kernels: a wash::Reduction
   std::string variable; ///< reduction kernels: where the result goes
+  /// The particle type it runs for, and a force kernel's neighbours' type
+  /// (indices into State::types; -1: every type).
+  int type = -1, neighbourType = -1;
 };
 
 /// What a reference run knows besides main's settings. One per program.
 struct State {
   std::vector<Force> forces;
   std::vector<Kernel> kernels;
+  /// Particle types in the order they were added (none: an untyped simulation).
+  std::vector<std::string> types;
   ParticleStore particles;
   bool inInitKernel = false;
   bool inVoidKernel = false;
+  /// An init or update kernel is running: set_type is allowed.
+  bool typesSettable = false;
   bool started = false;
 
   /// Storage rounding: the stored value of v under the chosen precision.
@@ -64,10 +73,16 @@ struct State {
     return v;
   }
 
+  /// The index of particle type `name`; a misuse if there is none.
+  std::uint32_t typeIndex(const std::string &name, const CallSite &loc) const;
+  /// The type a kernel registration names ("": every type, -1).
+  int kernelType(const std::string &name, const CallSite &loc) const;
+
   /// The force `name` as a scalar or vector, created on first use.
   const Force &force(const std::string &name, bool isVector, const CallSite &loc);
   /// Columns in output order: pos, vel, density, mass, smoothing_length, then
-  /// forces registered with add_force in that order, then created ones by name.
+  /// forces registered with add_force in that order, then created ones by
+  /// name, then (typed simulations only) type.
   Frame frame(const ParticleStore &store) const;
 };
 

@@ -6,6 +6,6 @@ void update(wash::Particle &p) { p.set_mass(1); }
 int main() {
   // CHECK: registration-indirect.cpp:[[@LINE+1]]:22: error: 'wash::add_update_kernel' is used other than by a direct call; the translator cannot see what it registers
   auto *reg = &wash::add_update_kernel;
-  reg(&update);
+  reg(&update, "", wash::CallSite::current());
   wash::start();
 }

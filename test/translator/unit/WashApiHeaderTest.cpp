@@ -33,7 +33,7 @@ using namespace wash::tr;
 namespace {
 
 /// A declaration's shape, in the few words the checks need: a type is
-/// "void", "double", "size_t", "vec" (wash::ParticleVec), "string", or
+/// "void", "double", "bool", "size_t", "vec" (wash::ParticleVec), "string", or
 /// "kernel:<return>(<parameter count>)" for a kernel pointer; else clang's
 /// spelling.
 struct Signature {
@@ -55,6 +55,8 @@ std::string shape(QualType T, ASTContext &Ctx) {
     return "void";
   if (Ctx.hasSameType(T, Ctx.DoubleTy))
     return "double";
+  if (T->isBooleanType())
+    return "bool";
   if (Ctx.hasSameType(T, Ctx.getSizeType()))
     return "size_t";
   if (vecDimension(T))
@@ -183,7 +185,15 @@ TEST(WashApiHeader, EveryAccessorIsDeclaredWithItsShape) {
     if (!S)
       continue;
     // A force accessor takes the force's name first; a setter takes the value.
+    // A type accessor takes the type's name only: is_type returns a bool.
     std::vector<std::string> Params;
+    if (A.IsType) {
+      EXPECT_EQ(S->Return, A.How == Mode::Read ? "bool" : "void");
+      EXPECT_EQ(S->Required, 1u);
+      EXPECT_EQ(S->Params.at(0), "string");
+      EXPECT_EQ(S->Const, A.How == Mode::Read) << "is_type is const, set_type not";
+      continue;
+    }
     if (A.isForce())
       Params.push_back("string");
     if (A.How == Mode::Write)

@@ -14,7 +14,9 @@ Liveness computeLiveness(const std::vector<Field> &Fields, const std::vector<Ker
     }
     const BuiltinField *B = F.Origin == FieldOrigin::Builtin ? builtinField(F.Name) : nullptr;
     FieldLiveness L;
-    L.Live = Read || Written || (B && B->AlwaysOutput);
+    // A typed simulation's type column is always output.
+    const bool TypeColumn = F.Origin == FieldOrigin::Builtin && F.Name == TypeField;
+    L.Live = Read || Written || (B && B->AlwaysOutput) || TypeColumn;
     L.OutputOnly = Written && !Read;
     if (!L.Live && F.Origin == FieldOrigin::Registered)
       Result.Findings.push_back({DiagId::ForceUnused, F.Pos, {F.Name}, {}});

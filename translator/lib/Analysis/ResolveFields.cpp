@@ -29,11 +29,16 @@ static Finding mismatch(const Field &F, const Access &A) {
 }
 
 ResolvedFields resolveFields(unsigned Dim, const std::vector<ForceRegistration> &Forces,
-                             const std::vector<Kernel> &Kernels) {
+                             const std::vector<Kernel> &Kernels, bool Typed) {
   ResolvedFields Result;
   std::vector<Field> &Fields = Result.Fields;
   for (const BuiltinField &B : builtinFields())
     Fields.push_back(builtin(B, Dim));
+  if (Typed) {
+    Field Type;
+    Type.Name = TypeField;
+    Fields.push_back(Type); // a builtin scalar: the type's index
+  }
   for (const ForceRegistration &R : Forces) {
     Field F;
     F.Name = R.Name;

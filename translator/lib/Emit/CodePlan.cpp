@@ -59,9 +59,25 @@ std::string CodePlan::variableSlot(const std::string &Name) {
 
 std::string CodePlan::sourceName() const { return Stem + "." + backendName(Target) + ".cpp"; }
 
+unsigned CodePlan::typeIndex(const std::string &Name) const {
+  return unsigned(std::find(Types.begin(), Types.end(), Name) - Types.begin());
+}
+
+std::string CodePlan::isTypeText(const std::string &Object, const std::string &Type) const {
+  return "(wash_gen::P." + Member.at(TypeField) + "[" + Object +
+         "] == " + std::to_string(typeIndex(Type)) + "u)";
+}
+
+std::string CodePlan::setTypeText(const std::string &Object, const std::string &Type) const {
+  return "wash_gen::P." + Member.at(TypeField) + "[" + Object +
+         "] = " + std::to_string(typeIndex(Type)) + "u";
+}
+
 std::string CodePlan::storedType(const Field &F) const {
   if (F.Name == "id")
     return "std::uint64_t";
+  if (F.Origin == FieldOrigin::Builtin && F.Name == TypeField)
+    return "std::uint32_t";
   return F.Kind == ForceKind::Vector ? "wash_gen::Stored" : "wash_gen::Real";
 }
 
@@ -154,6 +170,14 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   std::sort(Created.begin(), Created.end(),
             [](const Field *A, const Field *B) { return A->Name < B->Name; });
   Plan.Output.insert(Plan.Output.end(), Created.begin(), Created.end());
+  // A typed simulation's type column comes last (docs/semantics.md).
+  for (const ParticleType &T : M.Types)
+    Plan.Types.push_back(T.Name);
+  if (M.typed())
+    if (const Field *F = M.findField(TypeField); F && F->Origin == FieldOrigin::Builtin)
+      Plan.Output.push_back(F);
+  for (const Kernel &K : M.Kernels)
+    Plan.RestrictsKernels |= !K.ParticleType.empty();
 
   for (const Kernel &K : M.Kernels)
     Plan.Snapshotted.insert(K.Hazards.begin(), K.Hazards.end());

@@ -56,6 +56,8 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
     OS << "    P." << Plan.Member.at(F->Name) << ".push_back(";
     if (B && B->Kind == FieldKind::Id)
       OS << "index";
+    else if (F->Origin == FieldOrigin::Builtin && F->Name == TypeField)
+      OS << "0u"; // the first type added
     else
       OS << Type << "(" << (B && B->Created ? F->Name : "") << ")";
     OS << ");\n";
@@ -83,6 +85,12 @@ void emitFrameColumns(std::ostream &OS, const CodePlan &Plan) {
       OS << "  f.frameOnly();\n";
     }
   }
+  if (!Plan.Types.empty()) {
+    OS << "  f.typeNames({";
+    for (size_t T = 0; T < Plan.Types.size(); ++T)
+      OS << (T ? ", " : "") << stringLiteral(Plan.Types[T]);
+    OS << "});\n";
+  }
 }
 
 namespace {
@@ -90,7 +98,7 @@ namespace {
 std::vector<std::string> checkedFields(const Kernel &K, const CodePlan &Plan) {
   std::vector<std::string> Fields;
   for (const std::string &F : K.OwnWrites)
-    if (Plan.Member.count(F) && F != "id")
+    if (Plan.Member.count(F) && F != "id" && F != TypeField)
       Fields.push_back(F);
   return Fields;
 }
@@ -103,13 +111,34 @@ void emitFiniteChecks(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
        << ", \"" << K.Function << "\", \"" << F << "\");\n";
 }
 
+std::string typeRowsDeclaration(const CodePlan &Plan) {
+  if (!Plan.RestrictsKernels)
+    return "";
+  return rt::TypeRows + " typeRows(" + std::to_string(Plan.Types.size()) +
+         "); // the real particles of each type\n";
+}
+
+std::string typeRowsRebuild(const CodePlan &Plan, const std::string &Indent) {
+  if (!Plan.RestrictsKernels)
+    return "";
+  return Indent + "typeRows.rebuild(P." + Plan.Member.at(TypeField) + ", backend.owned());\n";
+}
+
+std::string kernelRows(const CodePlan &Plan, const Kernel &K) {
+  if (K.ParticleType.empty())
+    return "";
+  return "typeRows.of(" + std::to_string(Plan.typeIndex(K.ParticleType)) + "), ";
+}
+
 void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned KernelIndex, const CodePlan &Plan,
                       const std::string &Callee) {
   const std::string Call =
-      Callee + (K.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan) + ")" : "(self)");
+      Callee +
+      (K.Kind == KernelKind::Force ? "(self, " + neighbourListText(Plan, K) + ")" : "(self)");
   const std::vector<std::string> Checked = checkedFields(K, Plan);
+  const std::string Rows = kernelRows(Plan, K), In = Rows.empty() ? "" : "In";
   if (Checked.empty()) {
-    OS << "    backend.forEachParticle([](Index i) {\n"
+    OS << "    backend.forEachParticle" << In << "(" << Rows << "[](Index i) {\n"
        << "      Self self{i};\n"
        << "      " << Call << ";\n"
        << "    });\n";
@@ -117,7 +146,8 @@ void emitParticleLoop(std::ostream &OS, const Kernel &K, unsigned KernelIndex, c
     return;
   }
   const std::string Finite = "wroteFinite" + std::to_string(KernelIndex);
-  OS << "    const bool " << Finite << " = backend.forEachParticleChecked([](Index i) {\n"
+  OS << "    const bool " << Finite << " = backend.forEachParticleChecked" << In << "(" << Rows
+     << "[](Index i) {\n"
      << "      Self self{i};\n"
      << "      " << Call << ";\n"
      << "      return";
@@ -167,19 +197,22 @@ std::string stringLiteral(const std::string &S) {
   return L + "\"";
 }
 
-void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee) {
+void emitReduction(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
+                   const std::string &Callee) {
   std::string Op = K.ReduceOp == "sum" ? "Sum" : K.ReduceOp == "min" ? "Min" : "Max";
+  const std::string Rows = kernelRows(Plan, K), In = Rows.empty() ? "" : "In";
   OS << "    {\n"
      << "      static std::vector<double> values;\n"
      << "      values.assign(P.size(), 0.0);\n"
-     << "      backend.forEachParticle([](Index i) {\n"
+     << "      backend.forEachParticle" << In << "(" << Rows << "[](Index i) {\n"
      << "        Self self{i};\n"
      << "        values[i] = " << Callee << "(self);\n"
      << "      });\n"
      << "      "
      << (K.Variable == TimeStepTarget ? rt::SetReducedTimeStep + "("
                                       : rt::SetVariable + "(" + stringLiteral(K.Variable) + ", ")
-     << "backend.reduce(P.id, values, " << rt::ReduceOp << "::" << Op << "));\n"
+     << (Rows.empty() ? "backend.reduce(" : "backend.reduceOver(" + Rows) << "P.id, values, "
+     << rt::ReduceOp << "::" << Op << "));\n"
      << "    }\n";
 }
 
@@ -228,10 +261,17 @@ std::string neighbourTableBuild(const CodePlan &Plan) {
          ", at, backend.owned());\n";
 }
 
-std::string neighbourListText(const CodePlan &Plan) {
+std::string neighbourListText(const CodePlan &Plan, const Kernel &K) {
+  // A neighbour type filters the list as it is built (Neighbours).
+  const std::string Filter = K.NeighbourType.empty()
+                                 ? ""
+                                 : ", P." + Plan.Member.at(TypeField) + ", " +
+                                       std::to_string(Plan.typeIndex(K.NeighbourType)) + "u";
   if (!Plan.SmoothingSearch)
-    return "NeighbourList(backend.grid(), P.pos, i)";
-  return "table.list(i)";
+    return "NeighbourList(backend.grid(), P.pos, i" + Filter + ")";
+  if (Filter.empty())
+    return "table.list(i)";
+  return "NeighbourList(table.list(i).begin(), table.list(i).end()" + Filter + ")";
 }
 
 void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan) {

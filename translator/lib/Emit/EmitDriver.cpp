@@ -11,6 +11,7 @@
 #include "wash/translator/Emit/EmitDriver.h"
 #include "wash/translator/Emit/DriverParts.h"
 #include "wash/translator/Emit/RuntimeNames.h"
+#include "wash/translator/WashApiTable.h"
 
 #include <sstream>
 
@@ -52,7 +53,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     OS << "    " << Callee << "();\n";
     return;
   case KernelKind::Reduction:
-    return emitReduction(OS, Kn, Callee);
+    return emitReduction(OS, Kn, Plan, Callee);
   case KernelKind::Force:
     emitForceSetUp(OS, M, Plan, K);
     break;
@@ -61,6 +62,8 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     break;
   }
   emitParticleLoop(OS, Kn, K, Plan, Callee);
+  if (Kn.OwnWrites.count(TypeField))
+    OS << typeRowsRebuild(Plan, "    ");
 }
 
 void emitStart(std::ostream &OS, const Model &M, const CodePlan &Plan,
@@ -91,8 +94,9 @@ void emitStart(std::ostream &OS, const Model &M, const CodePlan &Plan,
       emitFiniteChecks(OS, M.Kernels[K], Plan, "0", "    ");
     }
   OS << "    run.begin(particles, frame);\n"
-     << "  }\n"
-     << "  for (std::uint64_t step = run.firstStep(); step <= run.steps(); ++step) {\n";
+     << "  }\n";
+  OS << typeRowsRebuild(Plan, "  ");
+  OS << "  for (std::uint64_t step = run.firstStep(); step <= run.steps(); ++step) {\n";
   for (unsigned K = 0; K < M.Kernels.size(); ++K)
     if (M.Kernels[K].Kind != KernelKind::Init)
       emitKernel(OS, M, Plan, K, Callees[K]);
@@ -113,7 +117,7 @@ std::string emitDriver(const Model &M, const CodePlan &Plan,
      << " backend) =====\n\n"
      << "namespace wash_gen {\nnamespace {\n"
      << "Backend backend; // which rows are real particles, the cell grid, images, halos\n"
-     << neighbourTableDeclaration(Plan) << "\n";
+     << neighbourTableDeclaration(Plan) << typeRowsDeclaration(Plan) << "\n";
   emitParticleBytes(OS, Plan);
   OS << "/// A neighbour search (docs/semantics.md): `fields` visits the columns the\n"
      << "/// copies neighbours read (periodic images, halos) must carry.\n"
@@ -122,7 +126,8 @@ std::string emitDriver(const Model &M, const CodePlan &Plan,
      << "            Fields fields) {\n"
      << "  try {\n"
      << "    backend.search(P, at, box, fields);\n"
-     << neighbourTableBuild(Plan) << "  } catch (const std::bad_alloc &) {\n"
+     << neighbourTableBuild(Plan) << typeRowsRebuild(Plan, "    ")
+     << "  } catch (const std::bad_alloc &) {\n"
      << "    throw " << rt::OutOfMemory
      << "(\"the neighbour search (cell sort, images, lists)\", P.size(), particleBytes);\n"
      << "  }\n}\n\n"

@@ -2,6 +2,7 @@
 #include "wash/translator/Emit/EmitStorage.h"
 #include "wash/translator/Emit/DriverParts.h"
 #include "wash/translator/Emit/RuntimeNames.h"
+#include "wash/translator/WashApiTable.h"
 
 #include <sstream>
 
@@ -57,9 +58,10 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
      << "struct Particles {\n";
   for (const Field *F : Plan.Stored)
     OS << "  " << rt::Column << "<"
-       << (F->Name == "id"                ? "std::uint64_t"
-           : F->Kind == ForceKind::Vector ? "Stored"
-                                          : "Real")
+       << (F->Name == "id"                                             ? "std::uint64_t"
+           : F->Origin == FieldOrigin::Builtin && F->Name == TypeField ? "std::uint32_t"
+           : F->Kind == ForceKind::Vector                              ? "Stored"
+                                                                       : "Real")
        << "> " << Plan.Member.at(F->Name) << ";" << (F->OutputOnly ? " // output only" : "")
        << "\n";
   OS << "\n  std::size_t size() const { return id.size(); }\n"

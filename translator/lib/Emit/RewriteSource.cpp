@@ -164,6 +164,14 @@ public:
     if (Callee->isArrow())
       Object = "(*" + Object + ")";
     bool IsSet = Accessor->How == Mode::Write;
+    if (Accessor->IsType) {
+      auto Type = E->getNumArgs() ? evaluateString(E->getArg(0), Ctx) : std::nullopt;
+      if (!Type) // InferAccesses already rejected this; keep the pass total.
+        return true;
+      std::string Lowered =
+          IsSet ? Plan.setTypeText(Object, *Type) : Plan.isTypeText(Object, *Type);
+      return replace(E->getSourceRange(), IsSet && !isStatement(E) ? "(" + Lowered + ")" : Lowered);
+    }
     std::string Field, Value;
     unsigned ValueArg = 0;
     if (Accessor->isForce()) {

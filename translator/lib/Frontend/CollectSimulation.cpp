@@ -3,6 +3,7 @@
 #include "wash/translator/Frontend/CheckRegistrationFlow.h"
 #include "wash/translator/Frontend/ForceName.h"
 #include "wash/translator/Frontend/ResolveKernel.h"
+#include "wash/translator/Frontend/TypeName.h"
 #include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/ExprCXX.h"
@@ -125,6 +126,9 @@ private:
     case ApiCall::add_force:
       addForce(CE);
       break;
+    case ApiCall::add_particle_type:
+      addParticleType(CE);
+      break;
     case ApiCall::set_bounding_box:
     case ApiCall::add_variable:
     case ApiCall::set_end_time:
@@ -154,6 +158,8 @@ private:
     K.Kind = Kind;
     if (Kind == KernelKind::Reduction && !reduction(CE, K))
       return;
+    if (!kernelTypes(CE, K))
+      return;
     K.Function = Def->getQualifiedNameAsString();
     K.Pos = D.toPos(CE->getBeginLoc());
     M.Kernels.push_back(K);
@@ -176,6 +182,46 @@ private:
     K.ReduceOp = Ops[*Op];
     K.Variable = *Var;
     return true;
+  }
+
+  /// The optional particle and neighbour types of a kernel registration:
+  /// add_update_kernel(&f, "fluid"), add_force_kernel(&f, "wall", "fluid"),
+  /// add_reduction_kernel(&f, op, "var", "fluid"). A default argument is "".
+  bool kernelTypes(const CallExpr *CE, Kernel &K) {
+    unsigned First = K.Kind == KernelKind::Reduction ? 3 : 1;
+    unsigned Count = K.Kind == KernelKind::Force                                       ? 2
+                     : K.Kind == KernelKind::Update || K.Kind == KernelKind::Reduction ? 1
+                                                                                       : 0;
+    std::string *Into[] = {&K.ParticleType, &K.NeighbourType};
+    for (unsigned I = 0; I < Count; ++I) {
+      if (First + I >= CE->getNumArgs())
+        break;
+      const Expr *Arg = CE->getArg(First + I);
+      if (isa<CXXDefaultArgExpr>(Arg))
+        continue;
+      // "" is every type, as the default argument says.
+      if (auto S = evaluateString(Arg, Ctx); S && S->empty())
+        continue;
+      auto Name = knownParticleType(Arg, Ctx, D, M.Types);
+      if (!Name)
+        return false;
+      *Into[I] = *Name;
+    }
+    return true;
+  }
+
+  void addParticleType(const CallExpr *CE) {
+    const Expr *NameArg = CE->getArg(0);
+    auto Name = particleTypeName(NameArg, Ctx, D);
+    if (!Name)
+      return;
+    for (const ParticleType &T : M.Types)
+      if (T.Name == *Name) {
+        D.report(DiagId::ParticleTypeAddedTwice, NameArg->getExprLoc(), {*Name});
+        D.report(DiagId::NoteRegisteredHere, D.fromPos(T.Pos), {*Name});
+        return;
+      }
+    M.Types.push_back({*Name, D.toPos(NameArg->getExprLoc())});
   }
 
   void addForce(const CallExpr *CE) {
@@ -272,6 +318,10 @@ bool collectSimulation(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs) {
   Stragglers S(Ctx.getSourceManager(), D, C.Reached);
   S.TraverseAST(Ctx);
   checkRegistrationFlow(Ctx, D, Refs.Main);
+  if (M.typed())
+    for (const ForceRegistration &F : M.Forces)
+      if (F.Name == TypeField)
+        D.report(DiagId::ParticleTypeNameClash, D.fromPos(F.Pos));
   if (!M.Sim.CallsStart)
     D.report(DiagId::MissingStart, Refs.Main->getLocation());
   return !D.hasErrors();

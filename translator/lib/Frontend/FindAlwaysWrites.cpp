@@ -115,6 +115,8 @@ private:
     auto A = particleAccessor(Call->getMethodDecl());
     if (!A || A->How != Mode::Write)
       return std::nullopt;
+    if (A->IsType)
+      return std::string(TypeField);
     if (A->isForce())
       return Call->getNumArgs() ? evaluateString(Call->getArg(0), Ctx) : std::nullopt;
     return A->Field->Name;

@@ -3,6 +3,7 @@
 #include "wash/translator/Frontend/ForceName.h"
 #include "wash/translator/Frontend/GlobalWrites.h"
 #include "wash/translator/Frontend/ParticleRoles.h"
+#include "wash/translator/Frontend/TypeName.h"
 #include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/Attr.h"
@@ -28,8 +29,9 @@ struct Frame {
 
 class KernelAnalyser {
 public:
-  KernelAnalyser(ASTContext &Ctx, Diagnoser &D, Kernel &K, SourceLocation KernelLoc)
-      : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc) {}
+  KernelAnalyser(ASTContext &Ctx, Diagnoser &D, Kernel &K, SourceLocation KernelLoc,
+                 const std::vector<ParticleType> &Types)
+      : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc), Types(Types) {}
 
   void run(const FunctionDecl *Def) {
     // The driver calls the kernel by its plain name, with no template arguments.
@@ -43,18 +45,24 @@ public:
       Params.push_back(RoleOwn);
     if (K.Kind == KernelKind::Force)
       Params.push_back(RoleList);
+    // Running for one type reads each particle's type, and keeping
+    // neighbours of one type reads theirs (so halos carry it).
+    if (!K.ParticleType.empty())
+      add({TypeField, Target::Own, Mode::Read, std::nullopt, K.Pos});
+    if (!K.NeighbourType.empty())
+      add({TypeField, Target::Neighbour, Mode::Read, std::nullopt, K.Pos});
     analyse(Def, Params);
     reportEscapedLambdas();
   }
 
 private:
   RoleEvaluator roles() {
-    return RoleEvaluator(
-        [this](const ValueDecl *VD) { return varRoles(VD); },
-        [this](const CallExpr *CE) -> std::optional<Roles> {
-          auto It = Frames.back()->Calls.find(CE);
-          return It == Frames.back()->Calls.end() ? std::nullopt : std::optional(It->second);
-        });
+    return RoleEvaluator([this](const ValueDecl *VD) { return varRoles(VD); },
+                         [this](const CallExpr *CE) -> std::optional<Roles> {
+                           auto It = Frames.back()->Calls.find(CE);
+                           return It == Frames.back()->Calls.end() ? std::nullopt
+                                                                   : std::optional(It->second);
+                         });
   }
   Roles roleOf(const Expr *E) { return roles().of(E); }
   Roles varRoles(const ValueDecl *VD) const {
@@ -184,6 +192,8 @@ private:
   void reportEscapedLambdas();
   void globalWrite(const Stmt *S);
   void particleMethod(const CallExpr *CE, const FunctionDecl *FD);
+  bool particleType(const CallExpr *CE, const clang::Expr *NameArg, const ParticleAccessor &P,
+                    Roles R);
   void libraryCall(const CallExpr *CE);
   bool libraryHelperCall(const CallExpr *CE, const FunctionDecl *FD);
   void userCall(const CallExpr *CE, const FunctionDecl *FD);
@@ -202,6 +212,7 @@ private:
   Diagnoser &D;
   Kernel &K;
   SourceLocation KernelLoc;
+  const std::vector<ParticleType> &Types;
   std::vector<Frame *> Frames;
   std::vector<const FunctionDecl *> Stack;
   std::map<std::pair<const FunctionDecl *, std::vector<Roles>>, Roles> Memo;
@@ -325,7 +336,11 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
     return;
   std::string Field;
   std::optional<ForceKind> Kind; // Set for forces only: which accessor was used.
-  if (P->isForce()) {
+  if (P->IsType) {
+    if (CE->getNumArgs() <= FirstArg || !particleType(CE, CE->getArg(FirstArg), *P, R))
+      return;
+    Field = TypeField;
+  } else if (P->isForce()) {
     if (CE->getNumArgs() <= FirstArg)
       return;
     const Expr *NameArg = CE->getArg(FirstArg);
@@ -350,6 +365,25 @@ void KernelAnalyser::particleMethod(const CallExpr *CE, const FunctionDecl *FD) 
     else
       add({Field, Target::Neighbour, P->How, Kind, D.toPos(Loc)});
   }
+}
+
+/// is_type and set_type: a known type; set_type only by init and update
+/// kernels, on their own particle.
+bool KernelAnalyser::particleType(const CallExpr *CE, const Expr *NameArg,
+                                  const ParticleAccessor &P, Roles R) {
+  if (!knownParticleType(NameArg, Ctx, D, Types))
+    return false;
+  if (P.How != Mode::Write)
+    return true;
+  if (R & RoleNeighbour) {
+    D.report(DiagId::SetTypeOnNeighbour, CE->getExprLoc());
+    return false;
+  }
+  if (K.Kind != KernelKind::Init && K.Kind != KernelKind::Update) {
+    D.report(DiagId::SetTypeOutsideKernel, CE->getExprLoc(), {kernelKindName(K.Kind), K.Function});
+    return false;
+  }
+  return true;
 }
 
 /// The lambda an argument evaluates to, looking through copies and variables.
@@ -422,8 +456,7 @@ void KernelAnalyser::globalWrite(const Stmt *S) {
 /// (`auto &q`, `P &p`): the source is rewritten once, from the template, and
 /// only accesses written against wash::Particle can be rewritten.
 bool KernelAnalyser::particleThroughTemplate(const FunctionDecl *FD,
-                                             const std::vector<Roles> &Params,
-                                             SourceLocation Loc) {
+                                             const std::vector<Roles> &Params, SourceLocation Loc) {
   const FunctionDecl *Pattern = FD->getTemplateInstantiationPattern();
   if (!Pattern)
     return false;
@@ -573,7 +606,7 @@ static void checkForceCount(Diagnoser &D, const Model &M) {
 
 bool inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs, Model &M) {
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
-    KernelAnalyser A(Ctx, D, M.Kernels[I], D.fromPos(M.Kernels[I].Pos));
+    KernelAnalyser A(Ctx, D, M.Kernels[I], D.fromPos(M.Kernels[I].Pos), M.Types);
     A.run(Refs.Kernels[I]);
   }
   checkForceCount(D, M);

@@ -11,6 +11,8 @@ static FieldSet rewrittenAfter(const std::vector<Kernel> &Kernels, unsigned Firs
     const Kernel &K = Kernels[I];
     Read.insert(K.OwnReads.begin(), K.OwnReads.end());
     Read.insert(K.NeighbourReads.begin(), K.NeighbourReads.end());
+    if (!K.ParticleType.empty())
+      continue; // it writes only its type's particles
     for (const std::string &F : K.AlwaysWrites)
       if (!Read.count(F))
         Rewritten.insert(F);
@@ -33,7 +35,8 @@ FieldSet planSearchReorder(const std::vector<Kernel> &Kernels,
         Both.insert(F);
     Result = Both;
   }
-  for (const char *Moved : {"pos", "smoothing_length", "id"})
+  // The per-type rows come from the type column right after the sort.
+  for (const char *Moved : {"pos", "smoothing_length", "id", "type"})
     Result.erase(Moved);
   return Result;
 }

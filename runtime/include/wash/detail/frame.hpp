@@ -24,6 +24,8 @@ struct Frame {
   int dimensions = 2;
   std::vector<std::uint64_t> ids;
   std::vector<Column> columns; ///< columns[0] is "pos"
+  /// A typed simulation's particle types, by index (its "type" column).
+  std::vector<std::string> typeNames;
 
   std::size_t size() const { return ids.size(); }
   /// Positions of the rows in ascending id order.

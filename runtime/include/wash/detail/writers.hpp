@@ -32,6 +32,8 @@ void writeCsv(const Frame &frame, const Columns &columns, std::ostream &out);
 struct VtpOptions {
   bool ascii = true; ///< else binary: every array raw in one appended block
   std::optional<double> time;
+  /// A typed simulation's type names, in the field data as type_<name>.
+  std::vector<std::string> typeNames;
 };
 void writeVtp(const Frame &frame, std::ostream &out, std::optional<double> time = std::nullopt);
 void writeVtp(const Frame &frame, const Columns &columns, const VtpOptions &options,

@@ -50,6 +50,13 @@ struct ForceRegistration {
   SourcePos Pos;
 };
 
+/// A particle type added with wash::add_particle_type; its index in
+/// Model::Types is the value of its particles' "type" field.
+struct ParticleType {
+  std::string Name;
+  SourcePos Pos;
+};
+
 enum class KernelKind { Init, Update, Force, Void, Reduction };
 const char *kernelKindName(KernelKind K);
 
@@ -81,6 +88,9 @@ struct Kernel {
 
   // Reduction kernels: "sum", "min" or "max", and the variable it sets.
   std::string ReduceOp, Variable;
+  /// The particle type it runs for (update, force and reduction kernels), and
+  /// a force kernel's neighbours' type; "" for every type.
+  std::string ParticleType, NeighbourType;
 
   // From summariseAccesses.
   FieldSet OwnReads, OwnWrites, NeighbourReads;
@@ -134,6 +144,8 @@ struct Model {
   std::string SourceFile;
   Settings Sim;
   std::vector<ForceRegistration> Forces;
+  /// Particle types in the order they were added; none: an untyped simulation.
+  std::vector<ParticleType> Types;
   std::vector<Kernel> Kernels;
 
   // Derived.
@@ -149,6 +161,9 @@ struct Model {
   FieldSet RewrittenAfterSearch;
 
   const Field *findField(const std::string &Name) const;
+  bool typed() const { return !Types.empty(); }
+  /// The index of type Name, or -1.
+  int typeIndex(const std::string &Name) const;
   bool hasErrors() const;
   bool searchesBySmoothingLength() const { return Sim.searchesBySmoothingLength(); }
   /// Once planned: the neighbour search keeps distances for the uses left.

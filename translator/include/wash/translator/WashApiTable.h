@@ -36,15 +36,21 @@ struct BuiltinField {
 std::span<const BuiltinField> builtinFields();
 const BuiltinField *builtinField(std::string_view Name);
 
-/// A wash::Particle member function: a builtin field's getter or setter, or a
-/// force accessor (Field null: the force is named by the first argument).
+/// The field of a typed simulation holding each particle's type (the index
+/// of its type in add_particle_type order): is_type reads it, set_type writes it.
+inline constexpr const char *TypeField = "type";
+
+/// A wash::Particle member function: a builtin field's getter or setter, a
+/// force accessor (Field null: the force is named by the first argument), or
+/// a type accessor (IsType: the type is named by the first argument).
 struct ParticleAccessor {
   const char *Method;
   const BuiltinField *Field;
   Mode How;
   ForceKind Kind; ///< The value's kind: scalar or vector (an id reads as scalar).
+  bool IsType = false;
 
-  bool isForce() const { return Field == nullptr; }
+  bool isForce() const { return Field == nullptr && !IsType; }
   /// The getter of builtin field Name.
   bool reads(std::string_view Name) const;
 };

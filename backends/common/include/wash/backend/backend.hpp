@@ -54,6 +54,14 @@ public:
   template <typename Body> bool forEachParticleChecked(Body body) const {
     return Loop::forEachParticleChecked(self().owned(), body);
   }
+  /// The same loops over some of the real particles' rows (one particle type's).
+  template <typename Body> void forEachParticleIn(const std::vector<Index> &rows, Body body) const {
+    Loop::forEachParticle(rows, body);
+  }
+  template <typename Body>
+  bool forEachParticleCheckedIn(const std::vector<Index> &rows, Body body) const {
+    return Loop::forEachParticleChecked(rows, body);
+  }
 
 private:
   const Derived &self() const { return static_cast<const Derived &>(*this); }
@@ -90,6 +98,8 @@ concept ParticleBackend =
       /// A reduction of values[row] over every real particle: a Sum exact and
       /// rounded once (detail::ExactSum), Min and Max (docs/semantics.md).
       { cb.reduce(P.id, values, detail::ReduceOp::Sum) } -> std::same_as<double>;
+      /// The same over some of the real particles' rows (one particle type's).
+      { cb.reduceOver(cb.owned(), P.id, values, detail::ReduceOp::Min) } -> std::same_as<double>;
       /// Combines this process's largest search radius with the others'.
       { B::combineMax(1.0) } -> std::same_as<double>;
       /// The frame of every particle, for the writing process.

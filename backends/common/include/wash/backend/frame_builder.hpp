@@ -37,6 +37,8 @@ public:
   void zeros(const char *name, int components) {
     frame_.columns.push_back({name, components, std::vector<double>(frame_.size() * components)});
   }
+  /// A typed simulation's type names, by index (VTK field data).
+  void typeNames(std::vector<std::string> names) { frame_.typeNames = std::move(names); }
   /// The column added last goes to frames only, not to --dump (acc).
   void frameOnly() { frame_.columns.back().inDump = false; }
   detail::Frame take() { return std::move(frame_); }

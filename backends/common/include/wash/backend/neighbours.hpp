@@ -76,6 +76,26 @@ public:
     static_assert(!Distances, "stored lists keep no distances");
   }
 
+  /// The same lists with only the neighbours of particle type `t` (a force
+  /// kernel's neighbour type), in the same order: filtered as the list is
+  /// built, so the kernel's loops see only those.
+  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
+             const Column<std::uint32_t> &type, std::uint32_t t) {
+    scan(grid, pos, self, grid.radius());
+    keepType(type, t);
+  }
+  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
+             const Column<std::uint64_t> &ids, double radius, const Column<std::uint32_t> &type,
+             std::uint32_t t)
+      : Neighbours(grid, pos, self, ids, radius) {
+    keepType(type, t);
+  }
+  Neighbours(const Ref *begin, const Ref *end, const Column<std::uint32_t> &type, std::uint32_t t)
+      : begin_(begin), end_(end) {
+    static_assert(!Distances, "stored lists keep no distances");
+    keepType(type, t);
+  }
+
   const Ref *begin() const { return begin_; }
   const Ref *end() const { return end_; }
   std::size_t size() const { return std::size_t(end_ - begin_); }
@@ -98,6 +118,32 @@ public:
   const Ref *cend() const { return end_; }
 
 private:
+  /// Keeps the entries whose particle is of type t, in order, in the
+  /// per-thread buffer (in place when the list is already there), branch-free.
+  void keepType(const Column<std::uint32_t> &type, std::uint32_t t) {
+    ScanBuffers<Ref> &buffers = threadBuffers();
+    const std::size_t n = size();
+    if (begin_ != buffers.rows())
+      buffers.reserve(n); // a stored list: copied out of the table
+    Ref *out = buffers.rows();
+    const Ref *in = begin_;
+    double *dist = nullptr;
+    if constexpr (Distances)
+      dist = buffers.distances(); // the scan's, aligned with the rows
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Ref r = in[k];
+      out[kept] = r;
+      if constexpr (Distances)
+        dist[kept] = dist[k];
+      kept += type[r.index] == t;
+    }
+    begin_ = out;
+    end_ = out + kept;
+    if constexpr (Distances)
+      dist_ = dist;
+  }
+
   /// Fills the per-thread buffer with the other particles within `radius` of
   /// particle `self`, in the grid's candidate order, without branches: every
   /// candidate is written and kept (the count advanced) if it passes.

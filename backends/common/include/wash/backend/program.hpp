@@ -12,6 +12,7 @@
 #include <wash/backend/frame_builder.hpp>
 #include <wash/backend/neighbour_table.hpp>
 #include <wash/backend/neighbours.hpp>
+#include <wash/backend/particle_types.hpp>
 #include <wash/backend/periodic.hpp>
 #include <wash/backend/reduce.hpp>
 #include <wash/backend/run.hpp>

@@ -64,6 +64,13 @@ public:
       return Loop::sum(values, images_.owned).template round<double>();
     return reduceById(ids, values, images_.owned, op);
   }
+  /// The same over `rows` only (one particle type's).
+  double reduceOver(const std::vector<Index> &rows, const Column<std::uint64_t> &ids,
+                    const std::vector<double> &values, detail::ReduceOp op) const {
+    if (op == detail::ReduceOp::Sum)
+      return Loop::sum(values, rows).template round<double>();
+    return reduceRowsById(ids, values, rows, op);
+  }
   static double combineMax(double v) { return v; }
 
   // Checkpoint and restart (wash/backend/checkpoint.hpp): one process.

@@ -64,6 +64,13 @@ public:
       return allreduceSum(Loop::sum(values, halo_.owned)).round<double>();
     return allreduceMinMax(values, halo_.owned, op);
   }
+  /// The same over `rows` of this rank only (one particle type's).
+  double reduceOver(const std::vector<Index> &rows, const backend::Column<std::uint64_t> &,
+                    const std::vector<double> &values, ::wash::detail::ReduceOp op) const {
+    if (op == ::wash::detail::ReduceOp::Sum)
+      return allreduceSum(Loop::sum(values, rows)).round<double>();
+    return allreduceMinMax(values, rows, op);
+  }
   static double combineMax(double v) { return allreduceMax(v); }
   /// A frame stays on its rank: the run's output writes every rank's rows
   /// collectively (detail::processes(), set by the entry point), through rank

@@ -18,8 +18,9 @@ struct ResolvedFields {
 /// Accesses (init kernels first, as the runtime creates them). Vectors have
 /// Dim components. Reports ForceCreated for each of those at its first
 /// use and ForceKindMismatch where a scalar accessor meets a vector force or
-/// the reverse.
+/// the reverse. A typed simulation (Typed: it adds particle types) has the
+/// builtin field "type" after the others.
 ResolvedFields resolveFields(unsigned Dim, const std::vector<ForceRegistration> &Forces,
-                             const std::vector<Kernel> &Kernels);
+                             const std::vector<Kernel> &Kernels, bool Typed = false);
 
 } // namespace wash::tr

@@ -48,6 +48,13 @@ struct CodePlan {
     return false;
   }
 
+  /// Particle types by index (none: untyped). Kernels restricted to a type
+  /// loop over that type's rows, kept by the driver (see EmitDriver).
+  std::vector<std::string> Types;
+  /// The index of type Name (the translator checked that it exists).
+  unsigned typeIndex(const std::string &Name) const;
+  bool RestrictsKernels = false; ///< Some kernel runs for one type only.
+
   /// The names of the global variables whose `get_variable(name)` the rewrite
   /// lowered to a slot, in order of first use (filled by rewriteSource).
   std::vector<std::string> Variables;
@@ -66,6 +73,9 @@ struct CodePlan {
   /// `P.<member>[Object] = Value`, converted to the storage type when float.
   std::string writeText(const std::string &Field, const std::string &Object,
                         const std::string &Value) const;
+  /// `p.is_type("wall")`, `p.set_type("wall")`: a test or a store of the index.
+  std::string isTypeText(const std::string &Object, const std::string &Type) const;
+  std::string setTypeText(const std::string &Object, const std::string &Type) const;
   /// The distance to read for a magnitude call at P, if it reads one; Written
   /// is the call as rewritten, kept where the particle may be a neighbour.
   std::optional<std::string> distanceText(const SourcePos &P, const std::string &Written) const;

@@ -65,7 +65,8 @@ std::string fieldList(const std::vector<std::string> &Fields);
 
 /// A reduction kernel: every real particle's value, then the backend's
 /// reduction in id order into its variable.
-void emitReduction(std::ostream &OS, const Kernel &K, const std::string &Callee);
+void emitReduction(std::ostream &OS, const Kernel &K, const CodePlan &Plan,
+                   const std::string &Callee);
 
 /// `// Name: force kernel, new neighbour search` and the like.
 std::string kernelComment(const Model &M, unsigned K);
@@ -87,7 +88,13 @@ std::string neighbourTableBuild(const CodePlan &Plan);
 
 /// The neighbour list of particle `i`: built now, or kept by the search's
 /// `table` (smoothing-length rule).
-std::string neighbourListText(const CodePlan &Plan);
+std::string neighbourListText(const CodePlan &Plan, const Kernel &K);
+/// The per-type rows of a typed program whose kernels run for one type:
+/// declared, and rebuilt after each search and each kernel that sets types.
+std::string typeRowsDeclaration(const CodePlan &Plan);
+std::string typeRowsRebuild(const CodePlan &Plan, const std::string &Indent);
+/// The rows a kernel's loop visits: its type's, or every real particle's ("").
+std::string kernelRows(const CodePlan &Plan, const Kernel &K);
 
 /// Before a force kernel: point its neighbour reads of snapshotted fields at
 /// the snapshot (copied now) if the kernel writes them, else at the live column.
