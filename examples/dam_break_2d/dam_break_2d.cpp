@@ -64,7 +64,7 @@ void Spawn() {
     const double width = wash::get_variable("tank_width");
     for (const wash::Vec2D& pos : WallPositions(width, tankHeight, dx, wallLayers)) {
         wash::Particle& p = wash::create_particle(rho0, mass, h, pos, wash::Vec2D{});
-        p.set_force_scalar("wall", 1.0);
+        p.set_type("wall");
     }
 }
 
@@ -73,7 +73,6 @@ void Spawn() {
 // the rates of the previous iteration; vel and density become the predicted
 // full-step values the force kernels see. Walls stay where they are.
 void KickDrift(wash::Particle& p) {
-    if (IsWall(p)) return;
     const double dt = wash::get_time_step();
     const wash::Vec2D velHalf = p.get_vel() + p.get_acc() * (0.5 * dt);
     const double rhoHalf = p.get_density() + p.get_force_scalar("density_rate") * (0.5 * dt);
@@ -88,7 +87,6 @@ void KickDrift(wash::Particle& p) {
 
 // The second half kick, with the new rates.
 void Kick(wash::Particle& p) {
-    if (IsWall(p)) return;
     const double dt = wash::get_time_step();
     p.set_vel(p.get_force_vector("vel_half") + p.get_acc() * (0.5 * dt));
     const double rho =
@@ -104,7 +102,6 @@ void Walls(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
 // Continuity with delta-SPH, the pressure and viscous accelerations, and the
 // particle's time step.
 void Rates(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
-    if (IsWall(p)) return;
     const sph::Tait eos = Water();
     const double c0 = eos.c0, h = p.get_smoothing_length(), rhoi = p.get_density();
     const double Pi = p.get_force_scalar("pressure"), ci = eos.sound_speed(rhoi);
@@ -140,10 +137,8 @@ void Rates(wash::Particle& p, const std::vector<wash::Particle>& neighbours) {
 
 // The smallest time step of the previous iteration's rates. The first
 // iteration has none yet (every time_step is 0), so it has dt = 0: it only
-// evaluates the rates of the initial state. Walls do not limit it.
-double TimeStep(const wash::Particle& p) {
-    return IsWall(p) ? 1.0 : p.get_force_scalar("time_step");
-}
+// evaluates the rates of the initial state. Over the fluid: walls do not limit it.
+double TimeStep(const wash::Particle& p) { return p.get_force_scalar("time_step"); }
 
 // The last step ends exactly at the end time.
 void LastStep() {
@@ -152,7 +147,7 @@ void LastStep() {
 
 // The surge front: the rightmost fluid particle's centre, plus half a spacing
 // for the edge of the fluid it stands for (the column starts at x = L).
-double Front(const wash::Particle& p) { return IsWall(p) ? 0.0 : p.get_pos().at(0); }
+double Front(const wash::Particle& p) { return p.get_pos().at(0); }
 
 // Prints "front T=<t sqrt(2g/L)> x/L=<front / L>" each time T crosses a
 // multiple of reportT (what validate.sh plots), at the end of the iteration.
@@ -176,21 +171,22 @@ int main(int argc, char** argv) {
     wash::add_variable("tank_width", tankWidth);
     wash::add_variable("front", 0.0);
     wash::add_variable("next_report", 0.0);
-    wash::add_force("wall", 1);
     wash::add_force("pressure", 1);
     wash::add_force("density_rate", 1);
     wash::add_force("wall_vel", 2);
     wash::add_force("time_step", 1);
     wash::add_force("vel_half", 2);
     wash::add_force("density_half", 1);
+    wash::add_particle_type("fluid"); // the default type
+    wash::add_particle_type("wall");
     wash::add_init_kernel(&Spawn);
-    wash::add_reduction_kernel(&TimeStep, wash::Reduction::Min, "time_step");
+    wash::add_reduction_kernel(&TimeStep, wash::Reduction::Min, "time_step", "fluid");
     wash::add_void_kernel(&LastStep);
-    wash::add_update_kernel(&KickDrift);
-    wash::add_force_kernel(&Walls);
-    wash::add_force_kernel(&Rates);
-    wash::add_update_kernel(&Kick);
-    wash::add_reduction_kernel(&Front, wash::Reduction::Max, "front");
+    wash::add_update_kernel(&KickDrift, "fluid");
+    wash::add_force_kernel(&Walls, "wall", "fluid");
+    wash::add_force_kernel(&Rates, "fluid");
+    wash::add_update_kernel(&Kick, "fluid");
+    wash::add_reduction_kernel(&Front, wash::Reduction::Max, "front", "fluid");
     wash::add_void_kernel(&Report);
     wash::set_end_time(endT / std::sqrt(2.0 * g / L));
     wash::start();

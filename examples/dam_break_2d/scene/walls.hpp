@@ -1,9 +1,9 @@
 // The tank of dam_break_2d: fixed wall particles around it, and the Adami,
 // Hu & Adams (2012) wall treatment of wash/sph/walls.hpp applied to them.
 //
-// Wall particles are marked by the scalar force "wall" (1 on a wall, 0 in the
-// fluid) and recognised by IsWall alone, so that the scene can move to
-// particle types by changing IsWall and the place that marks them.
+// Wall particles are of the particle type "wall" (the fluid's is "fluid");
+// the kernels are registered for the type they are for, so only code that
+// sees both kinds, a neighbour loop, asks IsWall.
 #pragma once
 
 #include <wash/wash.hpp>
@@ -15,7 +15,7 @@
 #include <cmath>
 #include <vector>
 
-inline bool IsWall(const wash::Particle& p) { return p.get_force_scalar("wall") > 0.5; }
+inline bool IsWall(const wash::Particle& p) { return p.is_type("wall"); }
 
 /// The centres of `layers` rows of wall particles of spacing dx outside the
 /// tank [0, width] x [0, height]: the floor (corners included) and both sides.
@@ -35,16 +35,15 @@ inline std::vector<wash::Vec2D> WallPositions(double width, double height, doubl
     return out;
 }
 
-/// For a wall particle: the pressure the fluid neighbours extrapolate to it
+/// For a wall particle, from its fluid neighbours (the kernel that calls it
+/// is registered for walls with fluid neighbours): the pressure they extrapolate to it
 /// (clamped at 0, so that a wall never pulls fluid), the density the equation
 /// of state gives for it, and the no-slip velocity the viscous term uses.
 inline void ExtrapolateToWall(wash::Particle& p, const std::vector<wash::Particle>& neighbours,
                               const wash::sph::Tait& eos, const wash::Vec2D& gravity) {
-    if (!IsWall(p)) return;
     const double h = p.get_smoothing_length();
     wash::sph::AdamiWall<2> sums;
     for (const auto& n : neighbours) {
-        if (IsWall(n)) continue;
         wash::Vec2D d = p.get_pos() - n.get_pos();
         double W = wash::sph::wendland_c2::W<2>(d.magnitude(), h);
         if (W > 0.0) sums.add(W, n.get_force_scalar("pressure"), n.get_density(), d, n.get_vel());
