@@ -36,7 +36,7 @@ while read -r backend flag; do distributed[$backend]=$flag; done < <(
 for program in "$new"/bin/*-reference $(for b in "${!distributed[@]}"; do echo "$new/bin/*-$b"; done); do
   name=$(basename "$program")
   [ -x "$old/bin/$name" ] || continue
-  case "$name" in blowup-*|misuse-*|support_errors-*|ca_fluid_sim_*) continue ;; esac
+  case "$name" in blowup-*|misuse-*|support_errors-*|variable_unadded-*|ca_fluid_sim_*) continue ;; esac
   backend=${name##*-}
   case "$backend" in
     reference|serial) counts="1" ;; # the serial program starts no threads
