@@ -88,6 +88,12 @@ ResolvedFields resolveFields(unsigned Dim, const std::vector<ForceRegistration> 
       }
     }
   }
+  // A force named like the type column, registered or created on first use,
+  // would collide with it in the storage and in every output file.
+  if (Typed)
+    for (const Field &F : Fields)
+      if (F.Origin != FieldOrigin::Builtin && F.Name == TypeField)
+        Result.Findings.push_back({DiagId::ParticleTypeNameClash, F.Pos, {}, {}});
   return Result;
 }
 

@@ -318,10 +318,6 @@ bool collectSimulation(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs) {
   Stragglers S(Ctx.getSourceManager(), D, C.Reached);
   S.TraverseAST(Ctx);
   checkRegistrationFlow(Ctx, D, Refs.Main);
-  if (M.typed())
-    for (const ForceRegistration &F : M.Forces)
-      if (F.Name == TypeField)
-        D.report(DiagId::ParticleTypeNameClash, D.fromPos(F.Pos));
   if (!M.Sim.CallsStart)
     D.report(DiagId::MissingStart, Refs.Main->getLocation());
   return !D.hasErrors();
