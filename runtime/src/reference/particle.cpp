@@ -1,6 +1,7 @@
 //===- particle.cpp - Particle handles of the reference runtime --------===//
 #include "state.hpp"
 
+#include <cstring>
 #include <new>
 
 namespace wash {
@@ -12,13 +13,28 @@ std::size_t Particle::get_id() const { return store_->id[index_]; }
 
 namespace {
 
+/// Where the translator's NeighbourWrite points for `x.setter(...)`: at the
+/// setter's name. g++ places the call at the '(' right after the name, so the
+/// name starts that many columns earlier; clang places it at the start of
+/// `x`, which no column arithmetic can turn into the name's.
+CallSite atSetterName(const CallSite &loc, const char *setter) {
+#if defined(__clang__)
+  return loc;
+#else
+  const auto length = static_cast<unsigned>(std::strlen(setter));
+  return CallSite(loc.file_name(), loc.line(),
+                  loc.column() > length ? loc.column() - length : loc.column());
+#endif
+}
+
 /// Stops the run if `store` is a force kernel's snapshot of the neighbours:
 /// the translator rejects such a write (NeighbourWrite) with this message.
 void checkWritable(const ParticleStore *store, const char *setter,
                    const CallSite &loc) {
   if (store->neighbours)
-    detail::usageError(loc, std::string("'") + setter +
-                                "' writes to a neighbour particle; neighbours are read-only");
+    detail::usageError(atSetterName(loc, setter),
+                       std::string("'") + setter +
+                           "' writes to a neighbour particle; neighbours are read-only");
 }
 
 } // namespace
