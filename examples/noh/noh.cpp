@@ -36,7 +36,7 @@ constexpr double inflowSpeed = 1.0;
 constexpr double ambientEnergy = 1e-6;    // specific internal energy of the cold gas
 constexpr double endTime = 0.6;
 constexpr double hFactor = 1.3;           // h = hFactor (m / rho)^(1/3): 74 neighbours within 2h
-constexpr double searchSupport = 2.5;     // neighbours within 2.5 h_i: those whose 2h_j reaches i too
+constexpr double searchSupport = 2.0;     // neighbours within 2 max(h_i, h_j): the pairs either kernel reaches
 constexpr double hMinFactor = 0.125;      // h stays within [hMinFactor h0, hMaxFactor h0]
 constexpr double hMaxFactor = 2.0;        // (the shocked gas is 64 times denser: h = h0 / 4)
 constexpr double courant = 0.3;
@@ -44,7 +44,7 @@ constexpr double alphaAV = 1.0;           // Monaghan (1992) viscosity
 constexpr double betaAV = 1.0;
 constexpr double alphaConductivity = 0.3; // Price (2008) artificial conductivity
 constexpr sph::GasScheme scheme{adiabaticIndex, alphaAV, betaAV, alphaConductivity, courant,
-                                searchSupport};
+                                searchSupport, wash::Support::Symmetric};
 
 double initialSpacing() { return 2.0 * radius / wash::get_variable("side"); }
 
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
     int side = argc > 1 ? std::atoi(argv[1]) : defaultSide;
     if (side < 8) side = defaultSide;
     wash::set_precision("double");
-    wash::set_smoothing_length_support(searchSupport);
+    wash::set_smoothing_length_support(searchSupport, wash::Support::Symmetric);
     wash::set_simulation_name("noh");
     wash::add_variable("side", side);
     wash::add_variable("self_correction", 0.0);

@@ -34,14 +34,14 @@ constexpr double ambientEnergy = 1e-8;    // specific internal energy of the col
 constexpr double depositWidth = 0.1;      // the deposit is exp(-r^2 / w^2), w as in SPH-EXA
 constexpr double endTime = 0.05;
 constexpr double hFactor = 1.3;           // h = hFactor (m / rho)^(1/3): 74 neighbours within 2h
-constexpr double searchSupport = 2.5;     // neighbours within 2.5 h_i: those whose 2h_j reaches i too
+constexpr double searchSupport = 2.0;     // neighbours within 2 max(h_i, h_j): the pairs either kernel reaches
 constexpr double hRange = 2.0;            // h stays within [h0 / hRange, hRange h0]
 constexpr double courant = 0.3;
 constexpr double alphaAV = 1.0;           // Monaghan (1992) viscosity
 constexpr double betaAV = 1.0;
 constexpr double alphaConductivity = 0.3; // Price (2008) artificial conductivity
 constexpr sph::GasScheme scheme{adiabaticIndex, alphaAV, betaAV, alphaConductivity, courant,
-                                searchSupport};
+                                searchSupport, wash::Support::Symmetric};
 constexpr wash::Vec3D centre{0.5, 0.5, 0.5};
 
 double initialSpacing() { return 1.0 / wash::get_variable("side"); }
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     int side = argc > 1 ? std::atoi(argv[1]) : defaultSide;
     if (side < 8) side = defaultSide;
     wash::set_precision("double");
-    wash::set_smoothing_length_support(searchSupport);
+    wash::set_smoothing_length_support(searchSupport, wash::Support::Symmetric);
     wash::set_bounding_box({0.0, 0.0, 0.0}, {1.0, 1.0, 1.0}, {true, true, true});
     wash::set_simulation_name("sedov");
     wash::add_variable("side", side);

@@ -128,6 +128,34 @@ TEST_F(RunTest, ATranslatedProgramRunsOnlyWhatItWasTranslatedFor) {
             "asked for smoothing lengths; call the neighbour-rule setting unconditionally in main");
 }
 
+TEST_F(RunTest, TheSupportRuleIsKeptAndMustMatchTheTranslation) {
+  runSettings().search = {};
+  set_smoothing_length_support(2.0);
+  EXPECT_FALSE(runSettings().search.symmetric); // Support::Gather by default
+  set_smoothing_length_support(2.0, Support::Symmetric);
+  EXPECT_TRUE(runSettings().search.symmetric);
+  EXPECT_EQ(runSettings().search.describe(),
+            "support radius 2h (pairs within the larger smoothing length)");
+  const Translation gather{.backend = "serial", .dimensions = 2, .smoothingLengthSearch = true};
+  const Translation symmetric{.backend = "serial",
+                              .dimensions = 2,
+                              .smoothingLengthSearch = true,
+                              .symmetricSupport = true};
+  EXPECT_EQ(messageOf<detail::RunError>([&] { detail::Run(gather, true); }),
+            "this program was translated for the gather support rule, but main asked for "
+            "wash::Support::Symmetric; call the neighbour-rule setting unconditionally in main");
+  EXPECT_EQ(detail::Run(symmetric, true).support(), 2.0);
+  set_smoothing_length_support(2.0, Support::Gather);
+  EXPECT_EQ(messageOf<detail::RunError>([&] { detail::Run(symmetric, true); }),
+            "this program was translated for the symmetric support rule, but main asked for "
+            "wash::Support::Gather; call the neighbour-rule setting unconditionally in main");
+  EXPECT_NE(messageOf<detail::UsageError>([] {
+              set_smoothing_length_support(2.0, static_cast<Support>(7));
+            }).find("error: the support rule must be wash::Support::Gather or "
+                    "wash::Support::Symmetric"),
+            std::string::npos);
+}
+
 TEST_F(RunTest, TheReferenceRunsWhateverMainAsksFor) {
   set_precision("float");
   runSettings().search = {.support = 2.0};

@@ -154,7 +154,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     wash::set_precision("double");
-    wash::set_influence_radius(radius);
+    // Every particle's h is the same: the pairs within 2h = radius, in id order.
+    wash::set_smoothing_length_support(2.0, wash::Support::Symmetric);
     wash::set_bounding_box({0.0, 0.0}, {1.0, 1.0}, {true, true});
     wash::set_simulation_name("closed_box");
     wash::add_variable("dt_factor", factor);

@@ -81,6 +81,8 @@ void dumpModel(const Model &M, std::ostream &OS) {
   OS << "  dimension: " << M.Sim.Dimension << '\n';
   printSetting(OS, "influence-radius", M.Sim.InfluenceRadius);
   printSetting(OS, "smoothing-length-support", M.Sim.SmoothingLengthSupport);
+  if (M.Sim.SymmetricSupport)
+    OS << "  support-rule: symmetric (pairs within k max(h_i, h_j))\n";
   printSetting(OS, "max-iterations", M.Sim.MaxIterations);
   printNames(OS, "simulation-name", M.Sim.SimulationNames);
   printNames(OS, "output-file-name", M.Sim.OutputFileNames);

@@ -19,12 +19,20 @@ void set_precision(const std::string &precision,
 /// Neighbours of a particle are the other particles within this distance.
 void set_influence_radius(double radius,
                           CallSite loc = CallSite::current());
+/// Which smoothing length bounds a pair under set_smoothing_length_support.
+enum class Support {
+  Gather,    ///< j is a neighbour of i within support * h_i
+  Symmetric, ///< within support * max(h_i, h_j): i and j list each other
+};
+
 /// Instead of one radius: the neighbours of particle i are the other particles
-/// within `support` * h_i of it, h_i being its smoothing length when the force
-/// kernel starts, listed in ascending id order. `support` is the kernel's
-/// support radius in units of h: 2 for the cubic spline or Wendland kernels
-/// written as W(r, h) with support 2h. Call this or set_influence_radius.
-void set_smoothing_length_support(double support,
+/// within `support` * h_i of it (Support::Gather), or within
+/// `support` * max(h_i, h_j) (Support::Symmetric), h being the smoothing
+/// lengths when the force kernel starts, listed in ascending id order.
+/// `support` is the kernel's support radius in units of h: 2 for the cubic
+/// spline or Wendland kernels written as W(r, h) with support 2h. Call this or
+/// set_influence_radius.
+void set_smoothing_length_support(double support, Support rule = Support::Gather,
                                   CallSite loc = CallSite::current());
 void set_simulation_name(const std::string &name);
 /// Base name of output files (default: the simulation name).

@@ -36,6 +36,13 @@ void checkRule(const Translation &translated, const SearchRule &rule) {
                    " neighbour search, but main asked for " +
                    (translatedForSupport ? "an influence radius" : "smoothing lengths") +
                    "; call the neighbour-rule setting unconditionally in main");
+  if (translatedForSupport && translated.symmetricSupport &&
+      rule.symmetric != *translated.symmetricSupport)
+    throw RunError(std::string("this program was translated for the ") +
+                   (*translated.symmetricSupport ? "symmetric" : "gather") +
+                   " support rule, but main asked for wash::Support::" +
+                   (rule.symmetric ? "Symmetric" : "Gather") +
+                   "; call the neighbour-rule setting unconditionally in main");
 }
 
 /// Whether `time` reached the multiple `next` of `every` (then moves `next`

@@ -36,10 +36,13 @@ void set_influence_radius(double radius, CallSite loc) {
   runSettings().search.radius = radius;
 }
 
-void set_smoothing_length_support(double support, CallSite loc) {
+void set_smoothing_length_support(double support, Support rule, CallSite loc) {
   if (!(support > 0.0) || !std::isfinite(support))
     usageErrorAt(loc, "the support radius must be a positive multiple of h");
+  if (rule != Support::Gather && rule != Support::Symmetric)
+    usageErrorAt(loc, "the support rule must be wash::Support::Gather or wash::Support::Symmetric");
   runSettings().search.support = support;
+  runSettings().search.symmetric = rule == Support::Symmetric;
 }
 
 void set_bounding_box(const std::vector<double> &lo, const std::vector<double> &hi,

@@ -84,19 +84,30 @@ void runForceKernel(ForceKernel kernel, const Kernel &k, detail::ParticleStore &
   std::vector<std::size_t> indices;
   std::vector<ParticleVec> images;
   std::vector<Particle> neighbours;
+  // The symmetric rule: every particle within the largest radius (the cell
+  // size), then those within the pair radius.
+  const bool symmetric = rule.perParticle() && rule.symmetric;
+  const double largest = symmetric ? cells.cellSize() : 0.0;
   for (std::size_t i = 0; i < live.size(); ++i) {
     if (!ofType(live, i, k.type))
       continue;
-    const double radius = searchRadius(rule, snapshot, i);
+    const double radius = symmetric ? largest : searchRadius(rule, snapshot, i);
     if (box.anyPeriodic())
       cells.periodicNeighbours(i, radius, rule.perParticle(), box, indices, images,
                                [](double v) { return state().store(v); });
     else
       cells.neighbours(i, radius, rule.perParticle(), indices);
     neighbours.clear();
-    for (std::size_t n = 0; n < indices.size(); ++n) // const: read-only
-      if (ofType(snapshot, indices[n], k.neighbourType))
-        neighbours.emplace_back(&snapshot, indices[n], box.anyPeriodic() ? &images[n] : nullptr);
+    for (std::size_t n = 0; n < indices.size(); ++n) { // const: read-only
+      const std::size_t j = indices[n];
+      if (symmetric &&
+          !detail::withinRadius<dimensions>(
+              snapshot.pos[i], box.anyPeriodic() ? images[n] : snapshot.pos[j],
+              detail::pairRadius(searchRadius(rule, snapshot, i), searchRadius(rule, snapshot, j))))
+        continue;
+      if (ofType(snapshot, j, k.neighbourType))
+        neighbours.emplace_back(&snapshot, j, box.anyPeriodic() ? &images[n] : nullptr);
+    }
     Particle self(&live, i);
     kernel(self, neighbours);
   }
@@ -175,6 +186,7 @@ void start() {
                                       .dimensions = dimensions,
                                       .floatStorage = std::nullopt,
                                       .smoothingLengthSearch = std::nullopt,
+                                      .symmetricSupport = std::nullopt,
                                       .program = detail::referenceProgram(s)},
                   /*writes=*/true);
   // The reference checks every value after every kernel on a frame of the state.

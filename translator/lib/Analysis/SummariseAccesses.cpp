@@ -4,7 +4,7 @@
 namespace wash::tr {
 
 std::vector<AccessSets> summariseAccesses(const std::vector<Kernel> &Kernels,
-                                          bool SearchesBySmoothingLength) {
+                                          bool SearchesBySmoothingLength, bool SymmetricSupport) {
   std::vector<AccessSets> Result;
   Result.reserve(Kernels.size());
   for (const Kernel &K : Kernels) {
@@ -19,6 +19,9 @@ std::vector<AccessSets> summariseAccesses(const std::vector<Kernel> &Kernels,
     // Under the smoothing-length rule the search reads h_i for each particle.
     if (K.Kind == KernelKind::Force && SearchesBySmoothingLength)
       S.OwnReads.insert("smoothing_length");
+    // Under the symmetric rule it reads each candidate's h_j as well.
+    if (K.Kind == KernelKind::Force && SearchesBySmoothingLength && SymmetricSupport)
+      S.NeighbourReads.insert("smoothing_length");
     Result.push_back(std::move(S));
   }
   return Result;

@@ -138,6 +138,7 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   Plan.Dim = M.Sim.Dimension;
   Plan.Float = M.Sim.Precision == "float";
   Plan.SmoothingSearch = M.searchesBySmoothingLength();
+  Plan.SymmetricSearch = Plan.SmoothingSearch && M.Sim.SymmetricSupport;
 
   std::set<std::string> Taken;
   for (const std::string &B : builtinFieldNames())

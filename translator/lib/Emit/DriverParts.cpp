@@ -10,6 +10,7 @@ std::string translationText(const CodePlan &Plan, const std::string &Program) {
          " translated{.backend = Backend::name, .dimensions = " + std::to_string(Plan.Dim) +
          ",\n      .floatStorage = " + (Plan.Float ? "true" : "false") +
          ", .smoothingLengthSearch = " + (Plan.SmoothingSearch ? "true" : "false") +
+         ", .symmetricSupport = " + (Plan.SymmetricSearch ? "true" : "false") +
          (Program.empty() ? "" : ",\n      .program = " + stringLiteral(Program)) + "};\n";
 }
 
@@ -233,7 +234,7 @@ std::string searchGeometryText(const CodePlan &Plan, const Kernel &K) {
     return rt::FixedGeometry + "(run.radius())";
   return rt::SmoothingGeometry + "(run.support(), " + Plan.readColumn("smoothing_length") +
          ", P.id, backend.owned(), run.box(), " + std::to_string(Plan.Dim) + ", step, \"" +
-         K.Function + "\", &Backend::combineMax)";
+         K.Function + "\", &Backend::combineMax" + (Plan.SymmetricSearch ? ", true" : "") + ")";
 }
 
 std::string domainCellSizeText(const CodePlan &Plan) {

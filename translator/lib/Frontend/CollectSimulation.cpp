@@ -87,6 +87,20 @@ private:
     return "\"" + *S + "\"";
   }
 
+  /// set_smoothing_length_support's rule: the generated search depends on
+  /// it, so it must be a constant (wash::Support::Gather when left out).
+  void supportRule(const CallExpr *CE) {
+    if (CE->getNumArgs() < 2 || isa<CXXDefaultArgExpr>(CE->getArg(1)->IgnoreImplicit()))
+      return;
+    const Expr *Rule = CE->getArg(1);
+    auto V = evaluateInt(Rule, Ctx);
+    if (!V || (*V != 0 && *V != 1)) {
+      D.report(DiagId::SupportRuleNotConstant, Rule->getExprLoc());
+      return;
+    }
+    M.Sim.SymmetricSupport = *V == 1; // wash::Support::Symmetric
+  }
+
   void registration(const CallExpr *CE, const ApiCallInfo &Call, bool InLoop) {
     if (Call.Use == CallUse::MainOnce && InLoop) {
       D.report(DiagId::RegistrationInLoop, CE->getBeginLoc(), {Call.Name});
@@ -111,6 +125,7 @@ private:
       break;
     case ApiCall::set_smoothing_length_support:
       M.Sim.SmoothingLengthSupport = value(Arg, evaluateNumber(Arg, Ctx));
+      supportRule(CE);
       break;
     case ApiCall::set_max_iterations: {
       auto N = evaluateInt(Arg, Ctx);

@@ -9,6 +9,8 @@
 // particles' positions and ids, never on storage order, threads or ranks.
 // With per-particle support radii (search.hpp) the radius is particle i's own
 // and the order is by ascending id; the cells are then only a search aid.
+// (The symmetric rule searches with the largest radius and then keeps the
+// pairs within their pair radius: runtime/src/reference/run.cpp.)
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -58,6 +60,8 @@ public:
       std::sort(members.begin(), members.end(),
                 [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
   }
+
+  double cellSize() const { return cellSize_; }
 
   Key keyOf(const Vec<double, D> &p) const {
     Key key;

@@ -48,6 +48,7 @@ struct Translation {
   int dimensions = 2;
   std::optional<bool> floatStorage = false;          ///< set_precision("float")
   std::optional<bool> smoothingLengthSearch = false; ///< set_smoothing_length_support
+  std::optional<bool> symmetricSupport = false;      ///< ... with Support::Symmetric
   /// What a checkpoint must have been written by: a hash of the kernels and
   /// columns (the reference's is made from its kernels and forces).
   std::string program = "";

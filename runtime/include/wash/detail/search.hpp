@@ -5,14 +5,20 @@
 //    neighbours in canonical cell order (neighbour_search.hpp);
 //  - set_smoothing_length_support(k): when |x_j - x_i| <= k * h_i, with h_i
 //    particle i's smoothing length when the force kernel starts, neighbours in
-//    ascending id order (then the order cannot depend on any grid).
-// Every runtime computes the support radius k * h_i exactly as below.
+//    ascending id order (then the order cannot depend on any grid);
+//  - set_smoothing_length_support(k, Support::Symmetric): when
+//    |x_j - x_i|^2 <= (k * max(h_i, h_j))^2, in ascending id order: the pair
+//    radius is the larger of the two support radii (k * max(h_i, h_j) equals
+//    max(k * h_i, k * h_j) in double, multiplication by k > 0 being monotone).
+// Every runtime computes the support radius k * h_i and the pair radius
+// exactly as below.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
 
 #include <wash/detail/box.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -23,6 +29,7 @@ namespace wash::detail {
 struct SearchRule {
   std::optional<double> radius;  ///< set_influence_radius
   std::optional<double> support; ///< set_smoothing_length_support
+  bool symmetric = false;        ///< ... with Support::Symmetric
 
   bool perParticle() const { return support.has_value(); }
 
@@ -40,7 +47,10 @@ struct SearchRule {
   /// For the run header: "influence radius 0.35" or "support radius 2h (...)".
   std::string describe() const {
     char text[96];
-    if (support)
+    if (support && symmetric)
+      std::snprintf(text, sizeof text,
+                    "support radius %gh (pairs within the larger smoothing length)", *support);
+    else if (support)
       std::snprintf(text, sizeof text, "support radius %gh (per-particle smoothing length)",
                     *support);
     else
@@ -51,6 +61,9 @@ struct SearchRule {
 
 /// The support radius of a particle with smoothing length h.
 inline double supportRadius(double factor, double h) { return factor * h; }
+
+/// The pair radius of the symmetric rule: the larger support radius.
+inline double pairRadius(double radiusI, double radiusJ) { return std::max(radiusI, radiusJ); }
 
 /// "" if a particle's smoothing length can define a search, else what is wrong.
 inline std::string checkSmoothingLength(double h) {

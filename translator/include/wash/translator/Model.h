@@ -31,6 +31,9 @@ struct Settings {
   /// set_smoothing_length_support: neighbours within k * h_i, so every force
   /// kernel's search reads its particle's smoothing length.
   std::optional<SettingValue> SmoothingLengthSupport;
+  /// ... with wash::Support::Symmetric: j is i's neighbour within
+  /// k * max(h_i, h_j), so every search reads the neighbours' h too.
+  bool SymmetricSupport = false;
   std::optional<SettingValue> MaxIterations;
   /// Every value main may set, in source order (it may branch on argv).
   std::vector<SettingValue> SimulationNames;

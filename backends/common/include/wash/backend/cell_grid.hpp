@@ -155,6 +155,46 @@ public:
 
   double radius() const { return radius_; }
 
+  /// For each row p, the largest of radius[q] over the rows q in the cells
+  /// within reach of p's cell: a search radius for p that every q with
+  /// |x_q - x_p| <= radius[q] <= reach lies within. A max-filter of the cells'
+  /// largest radii over a box of half-width reach / cell size (plus two cells,
+  /// for the rounding of cell coordinates), one axis at a time, so a particle
+  /// far from any large radius searches with a small one. `radius` may be
+  /// out's data.
+  void nearbyLargest(const double *radius, double reach, std::vector<double> &out) const {
+    const std::size_t cells = cellStart_.size() - 1;
+    std::vector<double> largest(cells, 0.0), swept(cells);
+    WASH_OMP(parallel for if(cells >= parallelMinimum) schedule(static))
+    for (std::size_t c = 0; c < cells; ++c)
+      for (Index q = cellStart_[c]; q < cellStart_[c + 1]; ++q)
+        largest[c] = std::max(largest[c], radius[q]);
+    const double span = std::floor(reach * inverse_);
+    const std::int64_t half = (span < 1e6 ? std::int64_t(span) : std::int64_t(1e6)) + 2;
+    std::size_t stride = 1;
+    for (int a = 0; a < D; ++a) {
+      const std::int64_t n = dims_[a];
+      WASH_OMP(parallel for if(cells >= parallelMinimum) schedule(static))
+      for (std::size_t c = 0; c < cells; ++c) {
+        const std::int64_t at = std::int64_t(c / stride) % n;
+        const std::int64_t from = std::max<std::int64_t>(0, at - half),
+                           to = std::min<std::int64_t>(n - 1, at + half);
+        const std::size_t base = c - std::size_t(at) * stride;
+        double m = 0.0;
+        for (std::int64_t k = from; k <= to; ++k)
+          m = std::max(m, largest[base + std::size_t(k) * stride]);
+        swept[c] = m;
+      }
+      largest.swap(swept);
+      stride *= std::size_t(n);
+    }
+    out.resize(cellStart_.empty() ? 0 : cellStart_[cells]);
+    WASH_OMP(parallel for if(cells >= parallelMinimum) schedule(static))
+    for (std::size_t c = 0; c < cells; ++c)
+      for (Index q = cellStart_[c]; q < cellStart_[c + 1]; ++q)
+        out[q] = largest[c];
+  }
+
   /// The cells of x - r and x + r when r is the cell size and x lies well
   /// inside its cell: the one before and the one after x's, found with one
   /// multiplication. The products and quotients involved are within 3e-16

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstring>
 #include <utility>
+#include <vector>
 
 namespace wash::backend {
 
@@ -60,6 +61,53 @@ inline std::uint64_t *sortByIdRadix(std::uint64_t *keys, std::uint64_t *scratch,
     std::swap(from, to);
   }
   return from;
+}
+
+/// Where orderByIdBitmap keeps its bits and rows: one per thread. The bits
+/// are all clear between uses.
+struct IdBitmap {
+  static constexpr std::uint32_t span = 1u << 16; ///< ids within span of the smallest
+  std::vector<std::uint64_t> bits = std::vector<std::uint64_t>(span / 64, 0);
+  std::vector<std::uint32_t> rows = std::vector<std::uint32_t>(span);
+};
+
+/// The common case without sorting: the n entries at `list` (each with a row
+/// `.index`), whose ids `idOf(row)` lie in [lo, hi], put in ascending id order
+/// when those ids are distinct and hi - lo < IdBitmap::span. Each id sets its
+/// bit in a bitmap of the span and leaves its row at its offset; the set bits,
+/// read out a 64-bit word at a time, give the rows in id order: n writes and
+/// (hi - lo) / 64 words, where a radix sort makes two or three passes over
+/// the list and its bucket tables (docs/performance.md). Returns false, the
+/// list unchanged, when the span is larger or two ids are equal (a periodic
+/// image and its particle; the radix sort orders those by row).
+template <typename Entry, typename IdOf>
+bool orderByIdBitmap(Entry *list, std::size_t n, std::uint32_t lo, std::uint32_t hi, IdOf idOf,
+                     IdBitmap &m) {
+  if (hi - lo >= IdBitmap::span)
+    return false;
+  std::uint64_t *bits = m.bits.data();
+  std::uint32_t *rows = m.rows.data();
+  std::uint64_t clash = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t offset = std::uint32_t(idOf(list[k].index)) - lo;
+    const std::uint64_t bit = std::uint64_t(1) << (offset & 63);
+    clash |= bits[offset >> 6] & bit;
+    bits[offset >> 6] |= bit;
+    rows[offset] = std::uint32_t(list[k].index);
+  }
+  const std::size_t words = ((hi - lo) >> 6) + 1;
+  if (clash) {
+    std::memset(bits, 0, words * sizeof bits[0]);
+    return false;
+  }
+  std::size_t out = 0;
+  for (std::size_t w = 0; w < words; ++w) {
+    std::uint64_t word = bits[w];
+    bits[w] = 0;
+    for (; word; word &= word - 1)
+      list[out++].index = rows[w * 64 + std::size_t(std::countr_zero(word))];
+  }
+  return true;
 }
 
 } // namespace wash::backend

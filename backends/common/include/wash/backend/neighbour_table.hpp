@@ -8,6 +8,9 @@
 // particles. Memory: the lists (4 bytes a neighbour) and two pointers a row.
 // Under the influence-radius rule lists are rebuilt per kernel instead, from
 // the cell order at no sorting cost, and nothing is kept.
+// Under the symmetric rule a particle's candidates come from the largest
+// support radius near it (CellGrid::nearbyLargest), and each is kept within
+// its pair radius.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -40,6 +43,19 @@ public:
     begin_.assign(pos.size(), nullptr);
     end_.assign(pos.size(), nullptr);
     offset_.resize(n);
+    if (g.symmetric) { // every row's support radius, squared, and its search's reach
+      reach_.resize(pos.size());
+      pairR2_.resize(pos.size());
+      WASH_OMP(parallel for if(pos.size() >= parallelMinimum) schedule(static))
+      for (std::size_t q = 0; q < pos.size(); ++q)
+        reach_[q] = g.radiusOf(double(h[q]));
+      grid.nearbyLargest(reach_.data(), g.reach, reach_);
+      WASH_OMP(parallel for if(pos.size() >= parallelMinimum) schedule(static))
+      for (std::size_t q = 0; q < pos.size(); ++q) {
+        const double r = g.radiusOf(double(h[q]));
+        pairR2_[q] = r * r;
+      }
+    }
     WASH_OMP(parallel for schedule(static, 1))
     for (int s = 0; s < shares; ++s) {
       const std::size_t from = n * std::size_t(s) / std::size_t(shares),
@@ -48,9 +64,16 @@ public:
       buffer.clear();
       for (std::size_t k = from; k < to; ++k) {
         const Index i = rows[k];
-        List list(grid, pos, i, ids, g.radiusOf(double(h[i])));
         offset_[k] = buffer.size();
-        buffer.insert(buffer.end(), list.begin(), list.end());
+        if (g.symmetric) {
+          // A hair beyond the reach, so that the candidates' cells, rounded,
+          // cover every pair radius (the pair test decides).
+          List list(grid, pos, i, ids, reach_[i] * (1.0 + 0x1p-40), pairR2_[i], pairR2_.data());
+          buffer.insert(buffer.end(), list.begin(), list.end());
+        } else {
+          List list(grid, pos, i, ids, g.radiusOf(double(h[i])));
+          buffer.insert(buffer.end(), list.begin(), list.end());
+        }
       }
       for (std::size_t k = from; k < to; ++k) { // the buffer has stopped moving
         begin_[rows[k]] = buffer.data() + offset_[k];
@@ -66,6 +89,7 @@ private:
   std::vector<std::vector<StoredNeighbourRef>> buffers_;
   std::vector<const StoredNeighbourRef *> begin_, end_;
   std::vector<std::size_t> offset_;
+  std::vector<double> reach_, pairR2_; // the symmetric rule's, per row
 };
 
 } // namespace wash::backend

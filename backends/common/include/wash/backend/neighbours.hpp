@@ -71,6 +71,19 @@ public:
     orderById(threadBuffers().rows(), size(), ids);
   }
 
+  /// The symmetric smoothing-length rule: the other particles j within the
+  /// pair radius of particle `self`, max(sqrt(selfR2), sqrt(pairR2[j])), in
+  /// ascending id order; `pairR2` holds every row's squared support radius and
+  /// `reach` bounds the pair radius of every candidate (the grid's candidates
+  /// come from it). max(r_i, r_j)^2 is max(r_i^2, r_j^2) exactly: squaring
+  /// non-negative numbers, rounded, keeps their order.
+  Neighbours(const CellGrid<D> &grid, const Column<PosT> &pos, Index self,
+             const Column<std::uint64_t> &ids, double reach, double selfR2, const double *pairR2) {
+    static_assert(!Distances, "the smoothing-length rule reorders the list: no distances");
+    scan<true>(grid, pos, self, reach, selfR2, pairR2);
+    orderById(threadBuffers().rows(), size(), ids);
+  }
+
   /// A list kept elsewhere (NeighbourTable).
   Neighbours(const Ref *begin, const Ref *end) : begin_(begin), end_(end) {
     static_assert(!Distances, "stored lists keep no distances");
@@ -146,10 +159,14 @@ private:
 
   /// Fills the per-thread buffer with the other particles within `radius` of
   /// particle `self`, in the grid's candidate order, without branches: every
-  /// candidate is written and kept (the count advanced) if it passes.
-  void scan(const CellGrid<D> &grid, const Column<PosT> &pos, Index self, double radius) {
+  /// candidate is written and kept (the count advanced) if it passes. With
+  /// Pairwise, the candidates come from `radius` but candidate j passes
+  /// within max(r2, pairR2[j]) (squared).
+  template <bool Pairwise = false>
+  void scan(const CellGrid<D> &grid, const Column<PosT> &pos, Index self, double radius,
+            double pairSelfR2 = 0.0, const double *pairR2 = nullptr) {
     const Vec<double, D> centre(pos[self]);
-    const double r2 = radius * radius;
+    const double r2 = Pairwise ? pairSelfR2 : radius * radius;
     CandidateRanges ranges;
     grid.candidates(centre, radius, ranges);
     ScanBuffers<Ref> &buffers = threadBuffers();
@@ -163,7 +180,8 @@ private:
 #if WASH_SCAN_AVX2
     if constexpr (std::is_same_v<PosT, Vec<double, D>> || std::is_same_v<PosT, Vec<float, D>>)
       if (avx2Scan()) { // four candidates at a time; it skips `self` itself
-        kept = keepRangesAvx2<D, Distances>(p, pos.size(), centre, r2, ranges, self, out, dist);
+        kept = keepRangesAvx2<D, Distances, Pairwise>(p, pos.size(), centre, r2, ranges, self, out,
+                                                      dist, pairR2);
         begin_ = out;
         end_ = out + kept;
         return;
@@ -171,7 +189,14 @@ private:
 #endif
     for (int r = 0; r < ranges.count; ++r) {
       const Index b = ranges.begin[r], e = ranges.end[r];
-      if (b <= self && self < e) { // skip the particle itself by splitting its row
+      if constexpr (Pairwise) {
+        if (b <= self && self < e) {
+          kept = keepPairs(p, centre, r2, pairR2, b, self, out, kept);
+          kept = keepPairs(p, centre, r2, pairR2, self + 1, e, out, kept);
+        } else {
+          kept = keepPairs(p, centre, r2, pairR2, b, e, out, kept);
+        }
+      } else if (b <= self && self < e) { // skip the particle itself by splitting its row
         kept = keep(p, centre, r2, b, self, out, dist, kept);
         kept = keep(p, centre, r2, self + 1, e, out, dist, kept);
       } else {
@@ -200,6 +225,19 @@ private:
       if constexpr (Distances)
         d2out[kept] = d2;
       kept += d2 <= r2;
+    }
+    return kept;
+  }
+
+  /// keep() with a radius per pair: candidate j passes within
+  /// max(r2, pairR2[j]).
+  static std::size_t keepPairs(const PosT *__restrict p, const Vec<double, D> &centre, double r2,
+                               const double *__restrict pairR2, Index b, Index e,
+                               Ref *__restrict out, std::size_t kept) {
+    for (Index j = b; j < e; ++j) {
+      const double d2 = squaredDistance(p[j], centre);
+      out[kept].index = j;
+      kept += d2 <= std::max(r2, pairR2[j]);
     }
     return kept;
   }
@@ -235,10 +273,23 @@ private:
 
   /// Puts the n rows at `rows`, as the scan left them (ascending), in
   /// ascending (id, row) order: the order of the `id << 32 | row` keys, which
-  /// sortByIdRadix gives as it keeps the rows' order among equal ids. Not
+  /// sortByIdRadix gives as it keeps the rows' order among equal ids, and
+  /// orderByIdBitmap faster when the ids are distinct and close together. Not
   /// inlined, so that profiles show what it costs.
   [[gnu::noinline]] static void orderById(Ref *rows, std::size_t n,
                                           const Column<std::uint64_t> &ids) {
+    if (n < 2)
+      return;
+    std::uint64_t lo = ids[rows[0].index], hi = lo; // ids below 2^32
+    for (std::size_t k = 1; k < n; ++k) {
+      lo = std::min(lo, ids[rows[k].index]);
+      hi = std::max(hi, ids[rows[k].index]);
+    }
+    thread_local IdBitmap bitmap;
+    if (orderByIdBitmap(
+            rows, n, std::uint32_t(lo), std::uint32_t(hi),
+            [&](std::size_t row) { return ids[row]; }, bitmap))
+      return;
     std::vector<std::uint64_t> &keys = threadKeys();
     if (keys.size() < 2 * n)
       keys.resize(2 * n);

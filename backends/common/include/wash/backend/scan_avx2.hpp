@@ -16,6 +16,7 @@
 #include <wash/backend/scan_buffers.hpp>
 #include <wash/vec.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -195,11 +196,13 @@ __attribute__((target("avx2"))) inline __m256d blockDistances(const Block<3> &bl
 /// last block reads up to three positions past e, so `count`, the column's
 /// size, bounds the blocks; the few candidates that remain are tested one at a
 /// time. With Distances, the squared distances kept go to d2out[kept..] too.
-template <int D, bool Distances, typename T, typename Ref>
+/// With Pairwise, candidate j passes within max(r2, pairR2[j]) (squared),
+/// pairR2 having an entry for each of the `count` rows.
+template <int D, bool Distances, bool Pairwise = false, typename T, typename Ref>
 __attribute__((target("avx2"))) inline std::size_t
 keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
             double r2, Index b, Index e, Index self, Ref *__restrict out, double *__restrict d2out,
-            std::size_t kept) {
+            std::size_t kept, const double *__restrict pairR2 = nullptr) {
   const __m256d limit = _mm256_set1_pd(r2);
   const __m256i itself = _mm256_set1_epi64x(std::int64_t(self));
   const __m256i end = _mm256_set1_epi64x(std::int64_t(e));
@@ -208,15 +211,26 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
   __m256i rows = _mm256_add_epi64(_mm256_set1_epi64x(std::int64_t(b)),
                                   _mm256_setr_epi64x(lane[0], lane[1], lane[2], lane[3]));
   Index j = b;
-  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four))
-    kept = keepBlock<D, Distances>(out, d2out, kept, blockDistances(loadBlock(p, j), centre), limit,
-                                   rows, itself, end);
+  for (; j < e && std::size_t(j) + 4 <= count; j += 4, rows = _mm256_add_epi64(rows, four)) {
+    __m256d blockLimit = limit;
+    if constexpr (Pairwise) { // the four candidates' radii, in lane order
+      __m256d pair = _mm256_loadu_pd(pairR2 + j);
+      if constexpr (D == 2)
+        pair = _mm256_permute4x64_pd(pair, 0xD8); // 0 2 1 3
+      blockLimit = _mm256_max_pd(limit, pair);
+    }
+    kept = keepBlock<D, Distances>(out, d2out, kept, blockDistances(loadBlock(p, j), centre),
+                                   blockLimit, rows, itself, end);
+  }
   for (; j < e; ++j) { // at the column's end: the same test, one at a time
     const double d2 = squaredDistance(p[j], centre);
     out[kept].index = j;
     if constexpr (Distances)
       d2out[kept] = d2;
-    kept += (d2 <= r2) & (j != self);
+    double limitJ = r2;
+    if constexpr (Pairwise)
+      limitJ = std::max(r2, pairR2[j]);
+    kept += (d2 <= limitJ) & (j != self);
   }
   return kept;
 }
@@ -226,15 +240,15 @@ keepRowAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, 
 /// With Distances, dist[k] is the distance to the k-th neighbour kept:
 /// std::sqrt of its squared distance, four at a time (whole blocks, hence
 /// scanSlack).
-template <int D, bool Distances, typename T, typename Ref>
+template <int D, bool Distances, bool Pairwise = false, typename T, typename Ref>
 __attribute__((target("avx2"))) std::size_t
 keepRangesAvx2(const Vec<T, D> *__restrict p, std::size_t count, const Vec<double, D> &centre,
                double r2, const CandidateRanges &ranges, Index self, Ref *__restrict out,
-               double *__restrict dist) {
+               double *__restrict dist, const double *__restrict pairR2 = nullptr) {
   std::size_t kept = 0;
   for (int r = 0; r < ranges.count; ++r)
-    kept = keepRowAvx2<D, Distances>(p, count, centre, r2, ranges.begin[r], ranges.end[r], self,
-                                     out, dist, kept);
+    kept = keepRowAvx2<D, Distances, Pairwise>(p, count, centre, r2, ranges.begin[r],
+                                               ranges.end[r], self, out, dist, kept, pairR2);
   if constexpr (Distances)
     for (std::size_t k = 0; k < kept; k += 4)
       _mm256_storeu_pd(dist + k, _mm256_sqrt_pd(_mm256_loadu_pd(dist + k)));

@@ -6,7 +6,8 @@
 // smoothing-length rule (detail/search.hpp) the reach is the largest support
 // radius, and the cells are finer, so that particles with small support
 // radii scan few candidates; the neighbour order (by id) does not depend on
-// the cells.
+// the cells. Under the symmetric rule the cells are the same, and the search
+// of particle i reaches the largest radius near it (NeighbourTable).
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -26,6 +27,7 @@ struct SearchGeometry {
   double reach = 0.0;    ///< largest search radius
   double cellSize = 1.0; ///< side of the grid's cells
   double support = 0.0;  ///< smoothing-length rule: support radius in units of h
+  bool symmetric = false; ///< pairs within the larger support radius
 
   /// The search radius of a particle with smoothing length h.
   double radiusOf(double h) const { return detail::supportRadius(support, h); }
@@ -38,11 +40,13 @@ inline SearchGeometry fixedGeometry(double radius) { return {radius, radius, 0.0
 
 /// The geometry for the smoothing-length rule over the particles at `rows`.
 /// `globalMax`, if given, combines a rank's largest radius with the other ranks'.
+/// `symmetric`: wash::Support::Symmetric.
 template <typename RealT>
 SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
                                  const Column<std::uint64_t> &ids, const std::vector<Index> &rows,
                                  const detail::Box &box, int dims, std::uint64_t step,
-                                 const char *kernel, double (*globalMax)(double) = nullptr) {
+                                 const char *kernel, double (*globalMax)(double) = nullptr,
+                                 bool symmetric = false) {
   auto fail = [&](const std::string &what) {
     throw detail::RunError("step " + std::to_string(step) + ": kernel '" + kernel + "': " + what);
   };
@@ -63,6 +67,7 @@ SearchGeometry smoothingGeometry(double support, const Column<RealT> &h,
   SearchGeometry g;
   g.reach = largest;
   g.support = support;
+  g.symmetric = symmetric;
   // Half the smallest radius, but no finer than a quarter of the largest:
   // CandidateRanges holds the rows of a radius of up to four cells.
   g.cellSize = std::max(largest / 4.0, smallest / 2.0);

@@ -14,8 +14,10 @@ struct AccessSets {
 
 /// The access sets of each kernel, in order, from its Kind and raw Accesses.
 /// SearchesBySmoothingLength (Model::searchesBySmoothingLength): every force
-/// kernel's search reads its particle's smoothing length.
+/// kernel's search reads its particle's smoothing length; with
+/// SymmetricSupport (Settings::SymmetricSupport) its neighbours' too.
 std::vector<AccessSets> summariseAccesses(const std::vector<Kernel> &Kernels,
-                                          bool SearchesBySmoothingLength);
+                                          bool SearchesBySmoothingLength,
+                                          bool SymmetricSupport = false);
 
 } // namespace wash::tr

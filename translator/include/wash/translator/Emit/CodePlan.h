@@ -23,6 +23,7 @@ struct CodePlan {
   unsigned Dim = 2;
   bool Float = false;           ///< Storage precision.
   bool SmoothingSearch = false; ///< Neighbours within k * h_i (else one radius).
+  bool SymmetricSearch = false; ///< ... within k * max(h_i, h_j).
 
   /// Every field by name, and the live ones in storage order (Model::Fields
   /// order) with their member names.
