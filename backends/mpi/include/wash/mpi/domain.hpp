@@ -3,7 +3,8 @@
 // Space is cut along a Z-order (Morton) curve over the cells of the canonical
 // grid (cell size = influence radius): each rank owns a contiguous range of
 // cell keys, so a cell and all its particles belong to one rank. The ranges
-// start with equal particle counts; later they are recomputed to balance the
+// start with about equal particle counts (from a sample of every rank's); later
+// they are recomputed to balance the
 // work measured on each rank, when its imbalance grows past a threshold.
 //
 //===----------------------------------------------------------------------===//
@@ -63,14 +64,6 @@ public:
 
   /// Searches since the splitters were last set (redistribute counts them).
   int &searchesSinceBalance() { return searches_; }
-
-  /// Splitters from every key, known on every rank (the initial state).
-  void balanceExactly(std::vector<std::uint64_t> keys) {
-    std::sort(keys.begin(), keys.end());
-    splitters_.clear();
-    for (int r = 1; r < ranks(); ++r)
-      splitters_.push_back(keys.empty() ? 0 : keys[keys.size() * r / ranks()]);
-  }
 
   /// Splitters from a weighted sample of every rank's keys (collective), so
   /// that every rank gets about the same work. `work` is this rank's measured
