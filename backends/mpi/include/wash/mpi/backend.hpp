@@ -101,7 +101,8 @@ public:
 
   /// Collective: the traffic of the run, per step, over all ranks and from
   /// the busiest rank; at the start, the most particles one rank held while
-  /// the init kernels ran and the most bytes one rank sent to distribute them.
+  /// the init kernels ran and the most bytes one rank sent to distribute them;
+  /// the halo copies of the last search, in all and on the busiest rank.
   void report(const backend::Run &run) const {
     const std::uint64_t steps = run.steps() ? run.steps() : 1;
     const Traffic &sent = traffic();
@@ -111,6 +112,8 @@ public:
     const std::uint64_t busiest = allreduceMax(sent.halo + sent.migration + sent.sums);
     const std::uint64_t initRows = allreduceMax(creations_.mostRows());
     const std::uint64_t startBytes = allreduceMax(startBytes_);
+    const std::uint64_t copies = allreduceSum(std::uint64_t(halo_.ghosts));
+    const std::uint64_t mostCopies = allreduceMax(std::uint64_t(halo_.ghosts));
     run.report("wash mpi: " + std::to_string(ranks()) + " ranks; halo exchange " +
                std::to_string(haloBytes / steps) + " bytes/step, particle migration " +
                std::to_string(moveBytes / steps) + " bytes/step, sum reductions " +
@@ -118,7 +121,8 @@ public:
     run.report("wash mpi: at most " + std::to_string(busiest / steps) +
                " bytes/step sent by one rank; at start at most " + std::to_string(initRows) +
                " particles held and " + std::to_string(startBytes) +
-               " bytes sent by one rank");
+               " bytes sent by one rank; halo of the last search " + std::to_string(copies) +
+               " copies, at most " + std::to_string(mostCopies) + " on one rank");
   }
 
 private:
@@ -132,6 +136,7 @@ private:
     // that have some.
     const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
     domain_.setCellSize(largest > 0.0 ? largest : 1.0);
+    domain_.setLowestCell(lowestCell(P));
     std::vector<std::uint64_t> keys(P.size());
     for (Index i = 0; i < P.size(); ++i)
       keys[i] = domain_.keyAt(P.pos[i]);
@@ -142,6 +147,23 @@ private:
     startBytes_ = traffic().migration - before;
     traffic().migration = before;
     return allreduceSum(std::uint64_t(halo_.owned.size()));
+  }
+
+  /// Collective: the lowest cell coordinate of any rank's particles, by axis.
+  template <typename Particles> typename Domain<D>::Cell lowestCell(const Particles &P) const {
+    constexpr std::int64_t shift = std::int64_t(1) << 62; // cells to unsigned, order kept
+    typename Domain<D>::Cell lowest;
+    for (int a = 0; a < D; ++a) {
+      std::uint64_t mine = ~std::uint64_t(0);
+      for (Index i = 0; i < P.size(); ++i) {
+        const std::int64_t c = std::clamp<std::int64_t>(
+            domain_.cellOf(Vec<double, D>(P.pos[i]))[a], -shift, shift - 1);
+        mine = std::min(mine, std::uint64_t(c + shift));
+      }
+      const std::uint64_t all = allreduceMin(mine);
+      lowest[a] = all == ~std::uint64_t(0) ? 0 : std::int64_t(all) - shift;
+    }
+    return lowest;
   }
 
   Creations creations_;
