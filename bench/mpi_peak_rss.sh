@@ -5,6 +5,7 @@
 # (sedov-mpi 50), 2 steps, and each rank's ratio to the bound of issue 21:
 # 1.3 x (the 1-rank peak) / P + 30 MiB. A ratio at or under 1 meets it.
 #   bash bench/mpi_peak_rss.sh [--bin DIR] [--ranks "1 2 4"] [--steps S]
+# (ONLY_SEED=1 skips Sedov.)
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$here/../build/bin ranks_list="1 2 4" steps=2
