@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <numeric>
+#include <string>
 
 namespace {
 
@@ -17,13 +19,35 @@ static_assert(wash::backend::ParticleBackend<wash::mpi::Backend<3>>);
 
 using wash::backend::Index;
 
-TEST(MpiBackend, EveryRankKeepsAShareAndReducesOverAll) {
-  wash::mpi::Backend<2> backend;
-  wash::backend::MinimalParticles<2> P; // every rank creates the same 40 particles
-  for (std::size_t k = 0; k < 40; ++k) {
-    P.id.push_back(k);
-    P.pos.push_back(wash::Vec<double, 2>{double(k), 0.0});
+/// Creates 40 particles through the backend as create_particle does, x = 0..39
+/// (plus `shift` on this rank), and returns how many rows it ever held.
+std::size_t createLine(wash::mpi::Backend<2> &backend, wash::backend::MinimalParticles<2> &P,
+                       double shift = 0.0) {
+  std::size_t most = 0;
+  for (std::uint64_t k = 0; k < 40; ++k) {
+    const wash::Vec<double, 2> pos{double(k) + shift, 0.0};
+    const std::uint64_t id = backend.create(P, 1.0, 1.0, 1.0, pos, pos);
+    EXPECT_EQ(id, k); // the creation index, whichever rank keeps it
+    P.id.push_back(id);
+    P.pos.push_back(pos);
+    most = std::max(most, P.size());
   }
+  return most;
+}
+
+TEST(MpiBackend, EveryRankStoresItsBlocksAndReducesOverAll) {
+  // Blocks of 4 creation indices, dealt round-robin: 10 blocks of 40 particles.
+  setenv("WASH_MPI_CREATION_BLOCK", "4", 1);
+  ASSERT_EQ(wash::mpi::Creations::blockSize(), 4u);
+  const int me = wash::mpi::rank(), n = wash::mpi::ranks();
+  std::size_t kept = 0;
+  for (int block = me; block < 10; block += n)
+    kept += 4;
+  wash::mpi::Backend<2> backend;
+  wash::backend::MinimalParticles<2> P;
+  // Its own particles, and one scratch row for a particle another rank keeps.
+  EXPECT_LE(createLine(backend, P), kept + 1);
+  EXPECT_EQ(P.size(), kept + (9 % n == me ? 0 : 1)); // block 9 holds the last
   EXPECT_EQ(backend.distribute(P, [] { return 1.0; }), 40u);
   EXPECT_EQ(wash::mpi::allreduceSum(std::uint64_t(backend.owned().size())), 40u);
   EXPECT_EQ(backend.writes(), wash::mpi::rank() == 0);
@@ -56,6 +80,32 @@ TEST(MpiBackend, EveryRankKeepsAShareAndReducesOverAll) {
   std::vector<std::uint64_t> every(40);
   std::iota(every.begin(), every.end(), std::uint64_t(0));
   EXPECT_EQ(ids, every);
+}
+
+TEST(MpiBackend, InitKernelsThatDifferAcrossRanksAreAnError) {
+  const std::string message = "must be deterministic";
+  { // a position differs on one rank
+    wash::mpi::Backend<2> backend;
+    wash::backend::MinimalParticles<2> P;
+    createLine(backend, P, wash::mpi::rank() == 1 ? 1e-9 : 0.0);
+    try {
+      backend.distribute(P, [] { return 1.0; });
+      ADD_FAILURE() << "different positions accepted";
+    } catch (const wash::detail::RunError &e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+    }
+  }
+  { // one rank creates one more particle
+    wash::mpi::Backend<2> backend;
+    wash::backend::MinimalParticles<2> P;
+    createLine(backend, P);
+    if (wash::mpi::rank() == 0) {
+      const wash::Vec<double, 2> pos{0.0, 0.0};
+      P.id.push_back(backend.create(P, 1.0, 1.0, 1.0, pos, pos));
+      P.pos.push_back(pos);
+    }
+    EXPECT_THROW(backend.distribute(P, [] { return 1.0; }), wash::detail::RunError);
+  }
 }
 
 } // namespace

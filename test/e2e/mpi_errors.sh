@@ -19,4 +19,11 @@ expect_in out.txt "cannot create output directory 'blocker/sub'"
 run -np 2 "$bin/blowup-$backend" --steps 50 >out.txt 2>&1 && fail "non-finite state accepted"
 [ $? -ne 124 ] || fail "the job hung after a rank failed"
 expect_in out.txt "error: step 2: after kernel 'Accelerate': field 'vel' of particle"
+# Init kernels that create different particles on different ranks
+# (test/e2e/scenes/nondeterministic_init.cpp): every rank compares a digest of
+# what it created and the job stops with a message.
+run -np 3 "$bin/nondeterministic_init-$backend" >out.txt 2>&1 && fail "rank-dependent init accepted"
+[ $? -ne 124 ] || fail "the job hung on a rank-dependent init"
+expect_in out.txt "the init kernels created different particles on different ranks"
+expect_in out.txt "must be deterministic"
 echo "mpi errors: ok"

@@ -66,16 +66,27 @@ std::vector<std::size_t> alltoallCounts(const std::vector<std::size_t> &counts) 
 
 std::vector<char> alltoallv(const std::vector<std::vector<char>> &send,
                             const std::vector<std::size_t> &recvBytes, std::uint64_t &counter) {
+  std::vector<char> flat;
+  std::vector<std::size_t> sendBytes;
+  for (const std::vector<char> &bytes : send) {
+    flat.insert(flat.end(), bytes.begin(), bytes.end());
+    sendBytes.push_back(bytes.size());
+  }
+  return alltoallv(flat, sendBytes, recvBytes, counter);
+}
+
+std::vector<char> alltoallv(const std::vector<char> &flat, const std::vector<std::size_t> &sendBytes,
+                            const std::vector<std::size_t> &recvBytes, std::uint64_t &counter) {
   const int n = ranks(), me = rank();
   std::vector<int> sc(n), sd(n), rc(n), rd(n);
-  std::vector<char> flat, recv;
-  std::size_t total = 0;
+  std::vector<char> recv;
+  std::size_t sent = 0, total = 0;
   for (int r = 0; r < n; ++r) {
-    sd[r] = toInt(flat.size());
-    sc[r] = toInt(send[r].size());
-    flat.insert(flat.end(), send[r].begin(), send[r].end());
+    sd[r] = toInt(sent);
+    sc[r] = toInt(sendBytes[r]);
+    sent += sendBytes[r];
     if (r != me)
-      counter += send[r].size();
+      counter += sendBytes[r];
     rd[r] = toInt(total);
     rc[r] = toInt(recvBytes[r]);
     total += recvBytes[r];

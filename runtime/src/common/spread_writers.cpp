@@ -87,7 +87,11 @@ void writeCsvSpread(const Processes &processes, const Frame &local, const Column
   const std::vector<std::uint64_t> counts = processes.allgather(local.size());
   const std::vector<std::size_t> order = local.orderById();
   const std::size_t width = widthOf(columns);
-  const std::size_t rows = chunkRows(chunkBytes, 8 + 8 * width);
+  // Rank 0 holds a chunk of every process at once (the merge): smaller
+  // chunks on many processes keep that under spreadMergeBytes.
+  const std::size_t share = spreadMergeBytes / std::size_t(processes.count());
+  const std::size_t rows = chunkRows(std::min(chunkBytes, std::max(share, spreadMinChunkBytes)),
+                                     8 + 8 * width);
   std::vector<char> message;
   if (processes.rank() != 0) {
     for (std::size_t from = 0; from < order.size(); from += rows) {

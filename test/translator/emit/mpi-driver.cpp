@@ -1,11 +1,16 @@
 // The MPI driver follows the halo plan: a new search carries ids, positions
 // and the first kernel's halo fields; a later kernel of the same search gets
 // only the fields written since they were sent; own-only reads never travel.
+// create_particle asks the backend for the id (and whether the row stays).
 // RUN: rm -rf %t && %wash --backend=mpi -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/mpi-driver.mpi.cpp | FileCheck %s
 // RUN: FileCheck %s --check-prefix=HEADER --input-file %t/mpi-driver.wash.hpp
 // HEADER: #include <wash/mpi/backend.hpp>
 // HEADER: using Backend = wash::mpi::Backend<2>;
+// The id is the creation index the backend gives; it decides which rows stay.
+// CHECK-LABEL: Self &create_particle(
+// CHECK: const std::uint64_t id = backend.create(P, density, mass, smoothing_length, pos, vel);
+// CHECK: P.id.push_back(id);
 // CHECK: wash::backend::Run run(translated, backend.writes());
 // CHECK: particles = backend.distribute(P, [&] { return run.radius(); });
 // CHECK-LABEL: // Density: force kernel, new neighbour search

@@ -44,6 +44,10 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
   OS << "Self &create_particle(double density, double mass, double smoothing_length,\n"
      << "                      const wash::ParticleVec &pos, const wash::ParticleVec &vel) {\n"
      << "  static Self created{0};\n"
+     << "  // The id is the creation index on every backend; a distributed one\n"
+     << "  // keeps this row only if the particle is this process's (create).\n"
+     << "  const std::uint64_t id = backend.create(P, density, mass, smoothing_length, pos, "
+        "vel);\n"
      << "  const std::size_t index = P.size();\n"
      << "  if (index >= std::size_t(std::numeric_limits<Index>::max()))\n"
      << "    throw " << rt::RunError << "(\"too many particles for this program's index type\");\n"
@@ -56,7 +60,7 @@ void emitCreateParticle(std::ostream &OS, const CodePlan &Plan) {
     const std::string Type = F->Kind == ForceKind::Vector ? "Stored" : "Real";
     OS << "    P." << Plan.Member.at(F->Name) << ".push_back(";
     if (B && B->Kind == FieldKind::Id)
-      OS << "index";
+      OS << "id";
     else if (F->Origin == FieldOrigin::Builtin && F->Name == TypeField)
       OS << "0u"; // the first type added
     else

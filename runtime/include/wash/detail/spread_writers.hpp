@@ -20,6 +20,11 @@ namespace wash::detail {
 /// particles takes few round trips to rank 0 (latency, not bandwidth, bounds
 /// a request-answer exchange). A chunk holds at least one row.
 inline constexpr std::size_t spreadChunkBytes = std::size_t(1) << 20;
+/// The CSV merge holds a chunk of every process on rank 0 at once: beyond 64
+/// processes the chunks shrink so that they add up to 64 MiB, down to 64 KiB
+/// each (reached at 1024 processes; past it, 64 KiB per process).
+inline constexpr std::size_t spreadMergeBytes = std::size_t(64) << 20;
+inline constexpr std::size_t spreadMinChunkBytes = std::size_t(64) << 10;
 
 /// Collective: `local` is this process's rows; `out` is the file on rank 0,
 /// null on the others; every process passes the same `chunkBytes`.

@@ -79,6 +79,14 @@ concept ParticleBackend =
       { cb.owned() } -> std::same_as<const std::vector<Index> &>;
       /// The cell grid of the current search (what neighbour lists walk).
       { cb.grid() } -> std::same_as<const CellGrid<D> &>;
+      /// create_particle, before it appends a row to every column: returns
+      /// the new particle's id, its creation index over all processes. A
+      /// distributed backend stores only its share: the row of a particle it
+      /// does not keep takes the init kernel's writes and is gone by the next
+      /// call (or distribute), so the columns hold the share plus one row.
+      {
+        b.create(P, 1.0, 1.0, 1.0, Vec<double, D>{}, Vec<double, D>{})
+      } -> std::same_as<std::uint64_t>;
       /// After the init kernels: keeps this process's share of the particles
       /// and returns how many there are in all. The callable gives the cell
       /// size of a domain decomposition; only a distributed backend calls it.

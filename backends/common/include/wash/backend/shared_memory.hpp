@@ -31,6 +31,12 @@ public:
   const std::vector<Index> &owned() const { return images_.owned; }
   const CellGrid<D> &grid() const { return grid_; }
 
+  /// create_particle, before it appends a row: the id, the creation index.
+  template <typename Particles, typename V>
+  std::uint64_t create(Particles &P, double, double, double, const V &, const V &) {
+    return P.size();
+  }
+
   /// Every particle the init kernels created is real and stays here.
   template <typename Particles, typename CellSize>
   std::uint64_t distribute(Particles &P, CellSize) {

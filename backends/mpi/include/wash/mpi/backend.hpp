@@ -12,6 +12,7 @@
 #include <wash/backend/run.hpp>
 #include <wash/backend/search_geometry.hpp>
 #include <wash/mpi/comm.hpp>
+#include <wash/mpi/creations.hpp>
 #include <wash/mpi/domain.hpp>
 #include <wash/mpi/for_each.hpp>
 #include <wash/mpi/halo.hpp>
@@ -29,14 +30,22 @@ public:
   const std::vector<Index> &owned() const { return halo_.owned; }
   const backend::CellGrid<D> &grid() const { return grid_; }
 
-  /// The init kernels ran on every rank (they must be deterministic): each
-  /// rank keeps its share, on a domain whose cells are cellSize() wide.
+  /// create_particle, before it appends a row: the new particle's id (its
+  /// creation index). Every rank runs the init kernels; each stores only its
+  /// blocks of creation indices (creations.hpp), the rest in a scratch row.
+  template <typename Particles, typename V>
+  std::uint64_t create(Particles &P, double density, double mass, double smoothingLength,
+                       const V &pos, const V &vel) {
+    return creations_.create(P, density, mass, smoothingLength, pos, vel);
+  }
+
+  /// After the init kernels: checks that every rank created the same
+  /// particles, then moves each rank's to their owners, on a domain whose
+  /// cells are cellSize() wide.
   template <typename Particles, typename CellSize>
   std::uint64_t distribute(Particles &P, CellSize cellSize) {
-    halo_.ownAll(P.size());
-    domain_.setCellSize(cellSize());
-    keepInitialShare(P, domain_, halo_);
-    return allreduceSum(std::uint64_t(halo_.owned.size()));
+    creations_.finish(P);
+    return settle(P, cellSize);
   }
 
   /// Particles to their owners, images across periodic faces, a new halo
@@ -84,35 +93,81 @@ public:
   bool anyRank(bool flag) const { return allreduceMax(std::uint64_t(flag)) != 0; }
   std::uint64_t sumOverRanks(std::uint64_t v) const { return allreduceSum(v); }
   /// The particles this rank read from a checkpoint (any share) go to their
-  /// owners, on a domain balanced by a sample of every rank's cells.
+  /// owners, as after the init kernels.
   template <typename Particles, typename CellSize>
   std::uint64_t restore(Particles &P, CellSize cellSize) {
-    halo_.ownAll(P.size());
-    // cellSize() sees this rank's particles only (at the start every rank has
-    // all of them): the largest over the ranks that have some.
-    const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
-    domain_.setCellSize(largest > 0.0 ? largest : 1.0);
-    std::vector<std::uint64_t> keys(P.size());
-    for (Index i = 0; i < P.size(); ++i)
-      keys[i] = domain_.keyAt(P.pos[i]);
-    domain_.balance(std::move(keys), double(P.size()));
-    migrate(P, domain_, halo_);
-    return allreduceSum(std::uint64_t(halo_.owned.size()));
+    return settle(P, cellSize);
   }
 
-  /// Collective: the traffic of the run, per step, over all ranks.
+  /// Collective: the traffic of the run, per step, over all ranks and from
+  /// the busiest rank; at the start, the most particles one rank held while
+  /// the init kernels ran and the most bytes one rank sent to distribute them;
+  /// the halo copies of the last search, in all and on the busiest rank.
   void report(const backend::Run &run) const {
     const std::uint64_t steps = run.steps() ? run.steps() : 1;
-    const std::uint64_t haloBytes = allreduceSum(traffic().halo);
-    const std::uint64_t moveBytes = allreduceSum(traffic().migration);
-    const std::uint64_t sumBytes = allreduceSum(traffic().sums);
+    const Traffic &sent = traffic();
+    const std::uint64_t haloBytes = allreduceSum(sent.halo);
+    const std::uint64_t moveBytes = allreduceSum(sent.migration);
+    const std::uint64_t sumBytes = allreduceSum(sent.sums);
+    const std::uint64_t busiest = allreduceMax(sent.halo + sent.migration + sent.sums);
+    const std::uint64_t initRows = allreduceMax(creations_.mostRows());
+    const std::uint64_t startBytes = allreduceMax(startBytes_);
+    const std::uint64_t copies = allreduceSum(std::uint64_t(halo_.ghosts));
+    const std::uint64_t mostCopies = allreduceMax(std::uint64_t(halo_.ghosts));
     run.report("wash mpi: " + std::to_string(ranks()) + " ranks; halo exchange " +
                std::to_string(haloBytes / steps) + " bytes/step, particle migration " +
                std::to_string(moveBytes / steps) + " bytes/step, sum reductions " +
                std::to_string(sumBytes / steps) + " bytes/step (all ranks)");
+    run.report("wash mpi: at most " + std::to_string(busiest / steps) +
+               " bytes/step sent by one rank; at start at most " + std::to_string(initRows) +
+               " particles held and " + std::to_string(startBytes) +
+               " bytes sent by one rank; halo of the last search " + std::to_string(copies) +
+               " copies, at most " + std::to_string(mostCopies) + " on one rank");
   }
 
 private:
+  /// Collective: the particles this rank holds (any share) go to their owners,
+  /// on a domain balanced by a sample of every rank's cells; returns how many
+  /// there are in all.
+  template <typename Particles, typename CellSize>
+  std::uint64_t settle(Particles &P, CellSize cellSize) {
+    halo_.ownAll(P.size());
+    // cellSize() sees this rank's particles only: the largest over the ranks
+    // that have some.
+    const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
+    domain_.setCellSize(largest > 0.0 ? largest : 1.0);
+    domain_.setLowestCell(lowestCell(P));
+    std::vector<std::uint64_t> keys(P.size());
+    for (Index i = 0; i < P.size(); ++i)
+      keys[i] = domain_.keyAt(P.pos[i]);
+    domain_.balance(std::move(keys), double(P.size()));
+    // Counted apart from the steps' migration: it happens once.
+    const std::uint64_t before = traffic().migration;
+    migrate(P, domain_, halo_);
+    startBytes_ = traffic().migration - before;
+    traffic().migration = before;
+    return allreduceSum(std::uint64_t(halo_.owned.size()));
+  }
+
+  /// Collective: the lowest cell coordinate of any rank's particles, by axis.
+  template <typename Particles> typename Domain<D>::Cell lowestCell(const Particles &P) const {
+    constexpr std::int64_t shift = std::int64_t(1) << 62; // cells to unsigned, order kept
+    typename Domain<D>::Cell lowest;
+    for (int a = 0; a < D; ++a) {
+      std::uint64_t mine = ~std::uint64_t(0);
+      for (Index i = 0; i < P.size(); ++i) {
+        const std::int64_t c = std::clamp<std::int64_t>(
+            domain_.cellOf(Vec<double, D>(P.pos[i]))[a], -shift, shift - 1);
+        mine = std::min(mine, std::uint64_t(c + shift));
+      }
+      const std::uint64_t all = allreduceMin(mine);
+      lowest[a] = all == ~std::uint64_t(0) ? 0 : std::int64_t(all) - shift;
+    }
+    return lowest;
+  }
+
+  Creations creations_;
+  std::uint64_t startBytes_ = 0; ///< sent by the migration of distribute or restore
   backend::CellGrid<D> grid_;
   std::vector<Index> order_;
   Domain<D> domain_;

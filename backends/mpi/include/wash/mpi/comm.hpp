@@ -24,6 +24,10 @@ Traffic &traffic();
 /// order; recvBytes[r] must be known (alltoallExchangeCounts gives it).
 std::vector<char> alltoallv(const std::vector<std::vector<char>> &send,
                             const std::vector<std::size_t> &recvBytes, std::uint64_t &counter);
+/// The same from one buffer: sendBytes[0] bytes for rank 0, then rank 1's...
+/// (no copy of what is sent).
+std::vector<char> alltoallv(const std::vector<char> &flat, const std::vector<std::size_t> &sendBytes,
+                            const std::vector<std::size_t> &recvBytes, std::uint64_t &counter);
 /// counts[r] -> what rank r sent to this one.
 std::vector<std::size_t> alltoallCounts(const std::vector<std::size_t> &counts);
 

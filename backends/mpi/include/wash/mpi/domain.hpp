@@ -3,7 +3,8 @@
 // Space is cut along a Z-order (Morton) curve over the cells of the canonical
 // grid (cell size = influence radius): each rank owns a contiguous range of
 // cell keys, so a cell and all its particles belong to one rank. The ranges
-// start with equal particle counts; later they are recomputed to balance the
+// start with about equal particle counts (from a sample of every rank's); later
+// they are recomputed to balance the
 // work measured on each rank, when its imbalance grows past a threshold.
 //
 //===----------------------------------------------------------------------===//
@@ -39,14 +40,24 @@ public:
     return c;
   }
 
-  /// Z-order key of a cell: the bits of the (offset) coordinates interleaved,
-  /// x in the lowest bit.
+  /// Keys count cells from `lowest` (the lowest cell of any particle at the
+  /// start) placed at 2^19: the particles' box then starts on a power of two
+  /// of the curve, so its first cuts are quadrants (octants) of that box, not
+  /// of all space around the origin, which a box across 0 would split into
+  /// scattered pieces. Particles may later move 2^19 cells below it.
+  void setLowestCell(const Cell &lowest) {
+    for (int a = 0; a < D; ++a)
+      origin_[a] = lowest[a] - offset / 2;
+  }
+
+  /// Z-order key of a cell: the bits of the coordinates counted from the
+  /// origin interleaved, x in the lowest bit.
   std::uint64_t keyOf(const Cell &c) const {
     std::uint64_t key = 0;
     for (int a = 0; a < D; ++a) {
-      std::int64_t u = c[a] + offset;
+      std::int64_t u = c[a] - origin_[a];
       if (u < 0 || u >= (std::int64_t(1) << bits))
-        throw std::out_of_range("wash mpi: a particle is more than 2^20 cells from the origin");
+        throw std::out_of_range("wash mpi: a particle is more than 2^19 cells from where the particles started");
       key |= spread(std::uint64_t(u)) << a;
     }
     return key;
@@ -64,14 +75,6 @@ public:
   /// Searches since the splitters were last set (redistribute counts them).
   int &searchesSinceBalance() { return searches_; }
 
-  /// Splitters from every key, known on every rank (the initial state).
-  void balanceExactly(std::vector<std::uint64_t> keys) {
-    std::sort(keys.begin(), keys.end());
-    splitters_.clear();
-    for (int r = 1; r < ranks(); ++r)
-      splitters_.push_back(keys.empty() ? 0 : keys[keys.size() * r / ranks()]);
-  }
-
   /// Splitters from a weighted sample of every rank's keys (collective), so
   /// that every rank gets about the same work. `work` is this rank's measured
   /// work (busySeconds); within a rank, a particle's share of it grows with the
@@ -80,7 +83,10 @@ public:
   void balance(std::vector<std::uint64_t> localKeys, double work) {
     searches_ = 0;
     std::sort(localKeys.begin(), localKeys.end());
-    const std::size_t n = localKeys.size(), samples = std::min<std::size_t>(n, 1024);
+    // Every rank receives every rank's samples: 1024 each up to 64 ranks,
+    // then fewer (64 at least), 64 Ki samples (1 MiB) in all.
+    const std::size_t perRank = std::clamp<std::size_t>(65536 / std::size_t(ranks()), 64, 1024);
+    const std::size_t n = localKeys.size(), samples = std::min<std::size_t>(n, perRank);
     // ahead[k]: the cell-share weight of the particles before k in key order.
     std::vector<double> ahead(n);
     double sum = 0.0;
@@ -124,6 +130,12 @@ public:
   }
 
 private:
+  static Cell filled(std::int64_t v) {
+    Cell c;
+    c.fill(v);
+    return c;
+  }
+
   /// The 21 low bits of v, moved to every D-th bit.
   static std::uint64_t spread(std::uint64_t v) {
     if constexpr (D == 2) {
@@ -145,6 +157,7 @@ private:
   }
 
   double cellSize_ = 1.0;
+  Cell origin_ = filled(-offset); ///< the cell of key coordinate 0
   int searches_ = 0;
   std::vector<std::uint64_t> splitters_; ///< rank r owns [splitters[r-1], splitters[r])
 };

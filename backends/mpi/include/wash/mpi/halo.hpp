@@ -93,13 +93,14 @@ void transfer(const std::vector<std::vector<Index>> &send,
   const int n = ranks();
   std::size_t rowBytes = 0;
   fields([&](auto &column) { rowBytes += sizeof(column[0]); });
-  std::vector<std::vector<char>> out(n);
-  std::vector<std::size_t> inBytes(n);
+  std::vector<char> out;
+  std::vector<std::size_t> outBytes(n), inBytes(n);
   for (int r = 0; r < n; ++r) {
-    fields([&](auto &column) { pack(column, send[r], out[r]); });
+    fields([&](auto &column) { pack(column, send[r], out); });
+    outBytes[r] = send[r].size() * rowBytes;
     inBytes[r] = recv[r].size() * rowBytes;
   }
-  std::vector<char> in = alltoallv(out, inBytes, counter);
+  std::vector<char> in = alltoallv(out, outBytes, inBytes, counter);
   const char *cursor = in.data();
   for (int r = 0; r < n; ++r)
     fields([&](auto &column) { cursor = unpack(column, recv[r], cursor); });
@@ -138,49 +139,26 @@ void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
       recv[r].push_back(next++);
   send[me].clear();
   std::size_t total = keep.size() + arriving;
-  // Pack before compacting, then compact, grow and unpack.
-  std::vector<std::vector<char>> out(n);
+  // Pack (into one buffer, in rank order) before compacting, then compact,
+  // grow and unpack; what was sent is freed before the columns grow.
+  std::vector<char> out;
   std::size_t rowBytes = 0;
   P.forEachColumn([&](auto &column) { rowBytes += sizeof(column[0]); });
-  for (int r = 0; r < n; ++r)
-    P.forEachColumn([&](auto &column) { detail::pack(column, send[r], out[r]); });
-  std::vector<std::size_t> inBytes(n);
-  for (int r = 0; r < n; ++r)
+  out.reserve((P.size() - keep.size()) * rowBytes);
+  std::vector<std::size_t> outBytes(n), inBytes(n);
+  for (int r = 0; r < n; ++r) {
+    P.forEachColumn([&](auto &column) { detail::pack(column, send[r], out); });
+    outBytes[r] = send[r].size() * rowBytes;
     inBytes[r] = recv[r].size() * rowBytes;
-  std::vector<char> in = alltoallv(out, inBytes, traffic().migration);
+  }
+  std::vector<char> in = alltoallv(out, outBytes, inBytes, traffic().migration);
+  std::vector<char>().swap(out);
   backend::keepRows(P, keep);
   P.forEachColumn([&](auto &column) { column.resize(total); });
   const char *cursor = in.data();
   for (int r = 0; r < n; ++r)
     P.forEachColumn([&](auto &column) { cursor = detail::unpack(column, recv[r], cursor); });
   plan.ownAll(total);
-}
-
-/// After the init kernels, which ran on every rank: checks that every rank
-/// created the same particles, then keeps this rank's share (balanced exactly).
-template <int D, typename Particles>
-void keepInitialShare(Particles &P, Domain<D> &domain, HaloPlan &plan) {
-  std::uint64_t hash = 1469598103934665603ull ^ P.size();
-  for (Index i = 0; i < P.size(); ++i) {
-    unsigned char bytes[sizeof(P.pos[i])];
-    std::memcpy(bytes, &P.pos[i], sizeof bytes);
-    for (unsigned char b : bytes)
-      hash = (hash ^ b) * 1099511628211ull;
-  }
-  if (allreduceMin(hash) != allreduceMax(hash))
-    throw ::wash::detail::RunError("the init kernels created different particles on different "
-                                "ranks; with the MPI backend they run on every rank and must be "
-                                "deterministic");
-  std::vector<std::uint64_t> keys(P.size());
-  for (Index i = 0; i < P.size(); ++i)
-    keys[i] = domain.keyAt(P.pos[i]);
-  domain.balanceExactly(keys);
-  std::vector<Index> mine;
-  for (Index i = 0; i < P.size(); ++i)
-    if (domain.ownerOf(keys[i]) == rank())
-      mine.push_back(i);
-  P.forEachColumn([&](auto &column) { backend::permute(column, mine); });
-  plan.ownAll(P.size());
 }
 
 /// Before a new neighbour search: drops the halo, rebalances the domain when

@@ -34,7 +34,8 @@ void emitCheckpointColumns(std::ostream &OS, const CodePlan &Plan);
 /// `particleBytes`: the size of one particle in the stored columns.
 void emitParticleBytes(std::ostream &OS, const CodePlan &Plan);
 
-/// `create_particle`: appends one particle to every column.
+/// `create_particle`: appends one particle to every column, with the id the
+/// backend gives (a distributed backend may keep the row only until the next).
 void emitCreateParticle(std::ostream &OS, const CodePlan &Plan);
 
 /// The FrameBuilder calls of `frame()`, in output order (`f` is the builder).
