@@ -176,8 +176,8 @@ void dumpModel(const Model &M, std::ostream &OS) {
         OS << "  " << M.Kernels[K].Function << ":\n";
       Named = true;
       OS << "    hoisted_" << H << " = " << E.Written << " @" << pos(E.Begin) << " in "
-         << E.Function << fileNote(M, E.Begin) << ": depends only on neighbour " << E.Neighbour << "'s";
-      printSet(M, OS, " fields", E.Reads, "");
+         << E.Function << fileNote(M, E.Begin) << ": depends only on constants and the fields of '" << E.Neighbour << "'";
+      printSet(M, OS, "", E.Reads, "");
     }
   }
 }

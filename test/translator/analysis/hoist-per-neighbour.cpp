@@ -41,12 +41,12 @@ void pressure(wash::Particle &p, const std::vector<wash::Particle> &ns, const Sc
   double sum = 0;
   for (const auto &n : ns) {
     const double rho = n.get_density();
-    // CHECK-NEXT: hoisted_0 = eos(rho) @[[#@LINE+1]]:23 in pressure: depends only on neighbour n's fields: density
+    // CHECK-NEXT: hoisted_0 = eos(rho) @[[#@LINE+1]]:23 in pressure: depends only on constants and the fields of 'n': density
     const double pj = eos(rho);
     sum += pj;
-    // CHECK-NEXT: hoisted_1 = std::sqrt(s.gamma * n.get_force_scalar("pressure") / rho) @[[#@LINE+1]]:12 in pressure: depends only on neighbour n's fields: density pressure
+    // CHECK-NEXT: hoisted_1 = std::sqrt(s.gamma * n.get_force_scalar("pressure") / rho) @[[#@LINE+1]]:12 in pressure: depends only on constants and the fields of 'n': density pressure
     sum += std::sqrt(s.gamma * n.get_force_scalar("pressure") / rho);
-    // CHECK-NEXT: hoisted_2 = n.get_force_scalar("pressure") / (rho * rho) @[[#@LINE+1]]:12 in pressure: depends only on neighbour n's fields: density pressure
+    // CHECK-NEXT: hoisted_2 = n.get_force_scalar("pressure") / (rho * rho) @[[#@LINE+1]]:12 in pressure: depends only on constants and the fields of 'n': density pressure
     sum += n.get_force_scalar("pressure") / (rho * rho);
     sum += n.get_mass() * 2.0;         // no call, no division: not worth a column
     sum += eos(p.get_density()) / rho; // reads the particle
@@ -57,7 +57,7 @@ void pressure(wash::Particle &p, const std::vector<wash::Particle> &ns, const Sc
     auto f = [&] { return eos(n.get_density()); };
     sum += f(); // in a lambda
     for (const auto &m : ns) // two neighbours: only the part over one
-      // CHECK-NEXT: hoisted_3 = eos(m.get_density()) @[[#@LINE+1]]:14 in pressure: depends only on neighbour m's fields: density
+      // CHECK-NEXT: hoisted_3 = eos(m.get_density()) @[[#@LINE+1]]:14 in pressure: depends only on constants and the fields of 'm': density
       sum += eos(m.get_density()) / n.get_density();
   }
   p.set_force_scalar("sum", sum);
@@ -79,7 +79,7 @@ void Forces(wash::Particle &p, const std::vector<wash::Particle> &ns) {
 
 // heat is written here and read through neighbours (a hazard): the loop
 // reads a snapshot, so it stays as written.
-// FOUND: hoisted_4 = eos(n.get_force_scalar("heat")) @[[#@LINE+5]]:10 in Relax: depends only on neighbour n's fields: heat
+// FOUND: hoisted_4 = eos(n.get_force_scalar("heat")) @[[#@LINE+5]]:10 in Relax: depends only on constants and the fields of 'n': heat
 // CHECK-NOT: Relax
 void Relax(wash::Particle &p, const std::vector<wash::Particle> &ns) {
   double h = 0;
