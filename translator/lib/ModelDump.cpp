@@ -2,10 +2,19 @@
 #include "wash/translator/ModelDump.h"
 #include "wash/translator/Analysis/ParticleTypes.h"
 
+#include <algorithm>
+
 namespace wash::tr {
 
 static std::string pos(const SourcePos &P) {
   return P.valid() ? std::to_string(P.Line) + ":" + std::to_string(P.Col) : "-";
+}
+
+/// " (gas.hpp)" for a position outside the simulation's own file.
+static std::string fileNote(const Model &M, const SourcePos &P) {
+  if (P.File.empty() || P.File == M.SourceFile)
+    return "";
+  return " (" + P.File.substr(P.File.find_last_of('/') + 1) + ")";
 }
 
 /// A set in field order, so the dump does not depend on name sorting.
@@ -154,6 +163,25 @@ void dumpModel(const Model &M, std::ostream &OS) {
   for (const DistanceUse &U : M.Distances)
     OS << "  " << U.Function << " @" << pos(U.Call) << ": " << U.List << ".distance(" << U.Neighbour
        << ") for " << U.Self << (U.SelfAlways ? "" : " if it is the own particle") << '\n';
+
+  // Only where something is hoisted, so that other dumps stay as they were.
+  if (M.Hoisted.empty())
+    return;
+  OS << "hoisted-per-neighbour: computed for every row before the kernel, read in its loop\n";
+  for (unsigned K = 0; K < M.Kernels.size(); ++K) {
+    bool Named = false;
+    for (unsigned H = 0; H < M.Hoisted.size(); ++H) {
+      const HoistedExpr &E = M.Hoisted[H];
+      if (std::find(E.Kernels.begin(), E.Kernels.end(), K) == E.Kernels.end())
+        continue;
+      if (!Named)
+        OS << "  " << M.Kernels[K].Function << ":\n";
+      Named = true;
+      OS << "    hoisted_" << H << " = " << E.Written << " @" << pos(E.Begin) << " in "
+         << E.Function << fileNote(M, E.Begin) << ": depends only on constants and the fields of '" << E.Neighbour << "'";
+      printSet(M, OS, "", E.Reads, "");
+    }
+  }
 }
 
 } // namespace wash::tr

@@ -19,10 +19,12 @@
 #include "wash/translator/Frontend/DetectDimension.h"
 #include "wash/translator/Frontend/FindAlwaysWrites.h"
 #include "wash/translator/Frontend/FindDistances.h"
+#include "wash/translator/Frontend/FindHoistable.h"
 #include "wash/translator/Frontend/InferAccesses.h"
 #include "wash/translator/Frontend/Parse.h"
 #include "wash/translator/ModelDump.h"
 #include "wash/translator/Plan/HaloExchange.h"
+#include "wash/translator/Plan/Hoisting.h"
 #include "wash/translator/Plan/NeighbourDistances.h"
 #include "wash/translator/Plan/NeighbourSearch.h"
 #include "wash/translator/Plan/SearchReorder.h"
@@ -128,6 +130,9 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   findNeighbourDistances(Ctx, D, M);
   if (Stop(PassId::FindNeighbourDistances))
     return;
+  findHoistable(Ctx, D, Refs, M);
+  if (Stop(PassId::FindHoistable))
+    return;
   findAlwaysWrites(Ctx, Refs, M);
   if (Stop(PassId::FindAlwaysWrites))
     return;
@@ -162,7 +167,10 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   if (Stop(PassId::PlanSearchReorder))
     return;
   storeHalos(M, planHalos(M.Kernels, M.Searches));
-  Stop(PassId::PlanHalos);
+  if (Stop(PassId::PlanHalos))
+    return;
+  M.Hoisted = planHoists(M.Hoisted, M.Kernels);
+  Stop(PassId::PlanHoists);
   if (Next != NumPasses)
     llvm::report_fatal_error("the recipe ran fewer passes than Passes.def lists");
 }

@@ -15,7 +15,7 @@
 // RUN: %wash --dump-after=plan-neighbour-distances %s 2>/dev/null | FileCheck %s --check-prefix=SEARCH
 // RUN: %wash --dump-after=plan-search-reorder %s 2>/dev/null | FileCheck %s --check-prefix=REORDER
 // RUN: %wash --dump-model %s > %t.model 2>/dev/null
-// RUN: %wash --dump-after=plan-halos %s > %t.last 2>/dev/null
+// RUN: %wash --dump-after=plan-hoists %s > %t.last 2>/dev/null
 // RUN: diff %t.model %t.last
 // It wins over --dump-model, and -o is ignored as with --dump-model.
 // RUN: rm -rf %t.dir
@@ -154,6 +154,7 @@ int main() {
 // LIST-NEXT: check-variables
 // LIST-NEXT: infer-accesses
 // LIST-NEXT: find-neighbour-distances
+// LIST-NEXT: find-hoistable
 // LIST-NEXT: find-always-writes
 // LIST-NEXT: summarise-accesses
 // LIST-NEXT: resolve-fields
@@ -164,8 +165,9 @@ int main() {
 // LIST-NEXT: plan-neighbour-distances
 // LIST-NEXT: plan-search-reorder
 // LIST-NEXT: plan-halos
+// LIST-NEXT: plan-hoists
 // LIST-NOT:  {{.}}
 
-// UNKNOWN: wash: error: unknown pass 'nope'; passes are: detect-dimension, collect-simulation, check-variables, infer-accesses, find-neighbour-distances, find-always-writes, summarise-accesses, resolve-fields, compute-liveness, check-force-uses, find-hazards, plan-neighbour-search, plan-neighbour-distances, plan-search-reorder, plan-halos{{$}}
+// UNKNOWN: wash: error: unknown pass 'nope'; passes are: detect-dimension, collect-simulation, check-variables, infer-accesses, find-neighbour-distances, find-hoistable, find-always-writes, summarise-accesses, resolve-fields, compute-liveness, check-force-uses, find-hazards, plan-neighbour-search, plan-neighbour-distances, plan-search-reorder, plan-halos, plan-hoists{{$}}
 
 // HELP: --dump-after=<pass> {{ *}}- Print the model right after the named pass and stop ('help' lists them)

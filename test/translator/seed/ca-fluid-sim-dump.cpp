@@ -2,7 +2,8 @@
 // sets, predictedPosition dead, position and viscosity created with warnings,
 // exactly vel a hazard in force_kernel, one search shared by the two force
 // kernels, whose three loops read the distances that search keeps, and
-// which rewrites density, nearDensity, pressure and viscosity before any read.
+// which rewrites density, nearDensity, pressure and viscosity before any read;
+// the neighbours' pressures are computed once per particle, not per pair.
 // RUN: %wash --dump-model %wash_src/examples/ca_fluid_sim/ca_fluid_sim.cpp > %t.out 2> %t.err
 // RUN: FileCheck %s --match-full-lines --strict-whitespace < %t.out
 // RUN: FileCheck %s --check-prefix=WARN < %t.err
@@ -70,6 +71,10 @@
 // CHECK-NEXT:  CalculateDensity @168:22: neighbours.distance(neighbour) for particle
 // CHECK-NEXT:  CalculatePressureForce @191:22: neighbours.distance(neighbour) for particle
 // CHECK-NEXT:  CalculateViscosity @218:22: neighbours.distance(neighbour) for particle
+// CHECK-NEXT:hoisted-per-neighbour: computed for every row before the kernel, read in its loop
+// CHECK-NEXT:  force_kernel:
+// CHECK-NEXT:    hoisted_0 = PressureFromDensity(neighbourDensity) @195:36 in CalculatePressureForce: depends only on constants and the fields of 'neighbour': density
+// CHECK-NEXT:    hoisted_1 = NearPressureFromDensity(neighbourNearDensity) @196:40 in CalculatePressureForce: depends only on constants and the fields of 'neighbour': nearDensity
 //  CHECK-NOT:{{.}}
 
 // WARN: ca_fluid_sim.cpp:144:15: warning: force 'position' is used but never registered; it is created as a vector

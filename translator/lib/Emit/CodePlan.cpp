@@ -131,6 +131,22 @@ std::optional<std::string> CodePlan::distanceText(const SourcePos &P,
   return "(wash_gen::isSelf<decltype(" + U.Self + ")> ? " + Read + " : " + Written + ")";
 }
 
+std::optional<std::string> CodePlan::hoistedText(const SourcePos &Begin,
+                                                 const SourcePos &End) const {
+  auto It = HoistAt.find({Begin.File, Begin.Line, Begin.Col, End.Line, End.Col});
+  if (It == HoistAt.end())
+    return std::nullopt;
+  return "double(wash_gen::" + hoistColumn(It->second) + "[" + Hoisted[It->second]->Neighbour +
+         "])";
+}
+
+std::string CodePlan::hoistComputeText(unsigned I, const std::string &Row) const {
+  std::string Text;
+  for (const HoistPiece &Piece : Hoisted.at(I)->Compute)
+    Text += Piece.isRead() ? readText(Piece.Field, Row, Piece.Kind) : Piece.Text;
+  return Text;
+}
+
 CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   CodePlan Plan;
   Plan.Target = Target;
@@ -186,6 +202,11 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
   // A distributed backend's migration and sort move every column.
   if (!backendInfo(Target).Distributed)
     Plan.RewrittenAfterSearch = M.RewrittenAfterSearch;
+  for (const HoistedExpr &H : M.Hoisted) {
+    Plan.HoistAt[{H.Begin.File, H.Begin.Line, H.Begin.Col, H.End.Line, H.End.Col}] =
+        unsigned(Plan.Hoisted.size());
+    Plan.Hoisted.push_back(&H);
+  }
   for (const DistanceUse &U : M.Distances)
     Plan.DistanceAt[{U.Call.Line, U.Call.Col}] = &U;
   return Plan;

@@ -3,6 +3,8 @@
 #include "wash/translator/Emit/RuntimeNames.h"
 #include "wash/translator/WashApiTable.h"
 
+#include <algorithm>
+
 namespace wash::tr {
 
 std::string translationText(const CodePlan &Plan, const std::string &Program) {
@@ -290,6 +292,19 @@ void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan) {
          << "    " << Col << "_neighbour = " << Col << "_snapshot.data();\n";
     else
       OS << "    " << Col << "_neighbour = P." << Col << ".data();\n";
+  }
+}
+
+void emitHoistedColumns(std::ostream &OS, const CodePlan &Plan, unsigned K) {
+  for (unsigned I = 0; I < Plan.Hoisted.size(); ++I) {
+    const HoistedExpr &H = *Plan.Hoisted[I];
+    if (std::find(H.Kernels.begin(), H.Kernels.end(), K) == H.Kernels.end())
+      continue;
+    const std::string Column = CodePlan::hoistColumn(I);
+    OS << "    // " << H.Written << " (" << H.Function << "), once per row, not per pair.\n"
+       << "    " << Column << ".resize(P.size());\n"
+       << "    for (std::size_t row = 0; row < P.size(); ++row)\n"
+       << "      " << Column << "[row] = " << Plan.hoistComputeText(I, "row") << ";\n";
   }
 }
 

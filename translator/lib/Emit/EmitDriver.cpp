@@ -56,6 +56,7 @@ void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned
     return emitReduction(OS, Kn, Plan, Callee);
   case KernelKind::Force:
     emitForceSetUp(OS, M, Plan, K);
+    emitHoistedColumns(OS, Plan, K);
     break;
   case KernelKind::Init:
   case KernelKind::Update:

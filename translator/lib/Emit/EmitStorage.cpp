@@ -111,6 +111,12 @@ std::string emitStorageHeader(const Model &M, const CodePlan &Plan) {
       OS << "inline " << rt::VariableSlot << " " << CodePlan::variableSlot(V) << "{"
          << stringLiteral(V) << ", " << V.size() << "};\n";
   }
+  if (!Plan.Hoisted.empty())
+    OS << "\n// Per-neighbour values hoisted out of neighbour loops: the driver computes\n"
+       << "// them for every row before the kernels that read them (docs/backends.md).\n";
+  for (unsigned I = 0; I < Plan.Hoisted.size(); ++I)
+    OS << "inline " << rt::Column << "<double> " << CodePlan::hoistColumn(I) << "; // "
+       << Plan.Hoisted[I]->Written << " in " << Plan.Hoisted[I]->Function << "\n";
   OS << "\nSelf &create_particle(double density, double mass, double smoothing_length,\n"
      << "                      const wash::ParticleVec &pos, const wash::ParticleVec &vel);\n"
      << "void start();\n"

@@ -141,6 +141,16 @@ public:
     return RecursiveASTVisitor::TraverseTypeLoc(TL);
   }
 
+  /// An expression over one neighbour computed before the kernel: its column.
+  bool VisitExpr(Expr *E) {
+    if (Plan.HoistAt.empty() || E->getBeginLoc().isMacroID() || E->getEndLoc().isMacroID() ||
+        !inUserFile(E->getBeginLoc()))
+      return true;
+    if (auto Column = Plan.hoistedText(D.toPos(E->getBeginLoc()), D.toPos(E->getEndLoc())))
+      return replace(E->getSourceRange(), *Column);
+    return true;
+  }
+
   bool VisitCXXMemberCallExpr(CXXMemberCallExpr *E) {
     if (!inUserFile(E->getBeginLoc()))
       return true;

@@ -143,6 +143,32 @@ struct DistanceUse {
   bool SelfAlways = false;
 };
 
+/// A piece of the text that computes a hoisted expression for one row: C++
+/// text, or a read of a neighbour's field (lowered by the emitter with the
+/// row as the particle).
+struct HoistPiece {
+  std::string Text;
+  std::string Field; ///< Set for a read.
+  ForceKind Kind = ForceKind::Scalar;
+  bool isRead() const { return !Field.empty(); }
+  friend bool operator==(const HoistPiece &, const HoistPiece &) = default;
+};
+
+/// An expression inside a neighbour loop whose value depends only on one
+/// neighbour's fields and on constants (findHoistable): computed once per
+/// row into a column before the force kernels that reach it, and read from
+/// there in the loop.
+struct HoistedExpr {
+  SourcePos Begin, End;  ///< The expression's first and last token.
+  std::string Function;  ///< The function it is in.
+  std::string Neighbour; ///< The loop variable it reads.
+  std::string Written;   ///< The expression as written, for the dump.
+  /// The same value for a row, in double: pieces in order.
+  std::vector<HoistPiece> Compute;
+  FieldSet Reads;                ///< The neighbour fields it reads.
+  std::vector<unsigned> Kernels; ///< The force kernels whose calls reach it.
+};
+
 struct Model {
   std::string SourceFile;
   Settings Sim;
@@ -162,6 +188,9 @@ struct Model {
   /// before anything reads them (planSearchReorder): the search's reordering
   /// need not carry their old values.
   FieldSet RewrittenAfterSearch;
+  /// Found by findHoistable; planHoists keeps those whose inputs no kernel
+  /// that reaches them writes. Each is computed into column `hoisted_<index>`.
+  std::vector<HoistedExpr> Hoisted;
 
   const Field *findField(const std::string &Name) const;
   bool typed() const { return !Types.empty(); }

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace wash::tr {
@@ -39,6 +40,15 @@ struct CodePlan {
   /// (line, column) of the call; none if the lists keep no distances.
   std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
   bool keepsDistances() const { return !DistanceAt.empty(); }
+  /// Model::Hoisted: column `hoisted_<index>` each, found by the file and the
+  /// positions of the expression's first and last tokens.
+  std::vector<const HoistedExpr *> Hoisted;
+  std::map<std::tuple<std::string, unsigned, unsigned, unsigned, unsigned>, unsigned> HoistAt;
+  /// The column read that replaces the hoisted expression from Begin to End, if any.
+  std::optional<std::string> hoistedText(const SourcePos &Begin, const SourcePos &End) const;
+  /// What hoisted expression I computes for row Row (a variable of the driver).
+  std::string hoistComputeText(unsigned I, const std::string &Row) const;
+  static std::string hoistColumn(unsigned I) { return "hoisted_" + std::to_string(I); }
   /// Model::RewrittenAfterSearch: columns the search's sort leaves in the
   /// old order (none on a distributed backend, which moves every column).
   FieldSet RewrittenAfterSearch;

@@ -101,4 +101,8 @@ std::string kernelRows(const CodePlan &Plan, const Kernel &K);
 /// the snapshot (copied now) if the kernel writes them, else at the live column.
 void emitSnapshots(std::ostream &OS, const Kernel &K, const CodePlan &Plan);
 
+/// Before force kernel K (after its search or refresh): the hoisted
+/// expressions it reaches, computed for every row, copies included.
+void emitHoistedColumns(std::ostream &OS, const CodePlan &Plan, unsigned K);
+
 } // namespace wash::tr
