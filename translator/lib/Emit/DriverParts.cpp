@@ -243,6 +243,13 @@ std::string searchGeometryText(const CodePlan &Plan, const Kernel &K) {
          K.Function + "\", &Backend::combineMax" + (Plan.SymmetricSearch ? ", true" : "") + ")";
 }
 
+std::string smoothingLengthAccessor(const CodePlan &Plan) {
+  if (!Plan.SmoothingSearch)
+    return "";
+  return ", [](std::uint32_t row) { return double(" + Plan.readColumn("smoothing_length") +
+         "[row]); }";
+}
+
 std::string domainCellSizeText(const CodePlan &Plan) {
   if (!Plan.SmoothingSearch)
     return "[&] { return run.radius(); }";

@@ -126,7 +126,7 @@ std::string emitDriver(const Model &M, const CodePlan &Plan,
      << "void search(const " << rt::SearchGeometry << " &at, const " << rt::Box << " &box,\n"
      << "            Fields fields) {\n"
      << "  try {\n"
-     << "    backend.search(P, at, box, fields);\n"
+     << "    backend.search(P, at, box, fields" << smoothingLengthAccessor(Plan) << ");\n"
      << neighbourTableBuild(Plan) << typeRowsRebuild(Plan, "    ")
      << "  } catch (const std::bad_alloc &) {\n"
      << "    throw " << rt::OutOfMemory

@@ -38,6 +38,10 @@ struct SearchGeometry {
 
 inline SearchGeometry fixedGeometry(double radius) { return {radius, radius, 0.0}; }
 
+/// What a generated search passes for the smoothing lengths under the
+/// influence-radius rule, which reads none (otherwise a callable h(row)).
+struct NoSmoothingLength {};
+
 /// The geometry for the smoothing-length rule over the particles at `rows`.
 /// `globalMax`, if given, combines a rank's largest radius with the other ranks'.
 /// `symmetric`: wash::Support::Symmetric.

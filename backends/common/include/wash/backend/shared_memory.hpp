@@ -48,8 +48,11 @@ public:
   /// (docs/semantics.md). Images are copies of every column, so the visited
   /// columns need no transfer. Columns the generated program marks as
   /// rewritten before they are read (forEachReorderedColumn) keep their order.
-  template <typename Particles, typename Fields>
-  void search(Particles &P, const SearchGeometry &at, const detail::Box &box, Fields) {
+  /// (The smoothing lengths, which a distributed backend's halo reads, are
+  /// not needed: images reach as far as the largest radius.)
+  template <typename Particles, typename Fields, typename SmoothingLength = NoSmoothingLength>
+  void search(Particles &P, const SearchGeometry &at, const detail::Box &box, Fields,
+              SmoothingLength = {}) {
     dropImages(P, images_);
     addImages<D>(P, images_.owned, box, at.reach, images_);
     grid_.sort(P.pos, P.id, at.cellSize, order_);

@@ -51,12 +51,15 @@ public:
   /// Particles to their owners, images across periodic faces, a new halo
   /// carrying the columns `fields` visits (id and pos among them), then
   /// everything local sorted by (cell, id). Migration moves every column.
-  template <typename Particles, typename Fields>
+  /// `h(row)`, where the rule reads smoothing lengths, lets the halo reach
+  /// only as far as each particle's pairs do (pair_reach.hpp).
+  template <typename Particles, typename Fields,
+            typename SmoothingLength = backend::NoSmoothingLength>
   void search(Particles &P, const backend::SearchGeometry &at, const ::wash::detail::Box &box,
-              Fields fields) {
+              Fields fields, SmoothingLength h = {}) {
     redistribute(P, domain_, halo_);
     backend::addImages<D>(P, halo_.owned, box, at.reach, halo_);
-    buildHalo(P, domain_, at.reach, halo_, fields);
+    buildHalo(P, domain_, RowReach<SmoothingLength>{at, h}, box, halo_, fields);
     grid_.sort(P.pos, P.id, at.cellSize, order_);
     P.forEachColumn([this](auto &column) { backend::permute(column, order_); });
     halo_.permuted(order_);
@@ -137,10 +140,10 @@ private:
     const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
     domain_.setCellSize(largest > 0.0 ? largest : 1.0);
     domain_.setLowestCell(lowestCell(P));
-    std::vector<std::uint64_t> keys(P.size());
+    std::vector<typename Domain<D>::Cell> cells(P.size());
     for (Index i = 0; i < P.size(); ++i)
-      keys[i] = domain_.keyAt(P.pos[i]);
-    domain_.balance(std::move(keys), double(P.size()));
+      cells[i] = domain_.cellOf(Vec<double, D>(P.pos[i]));
+    domain_.balance(cells, double(P.size()));
     // Counted apart from the steps' migration: it happens once.
     const std::uint64_t before = traffic().migration;
     migrate(P, domain_, halo_);

@@ -1,11 +1,14 @@
 //===- wash/mpi/domain.hpp - which rank owns which particles ------*- C++ -*-===//
 //
-// Space is cut along a Z-order (Morton) curve over the cells of the canonical
-// grid (cell size = influence radius): each rank owns a contiguous range of
-// cell keys, so a cell and all its particles belong to one rank. The ranges
-// start with about equal particle counts (from a sample of every rank's); later
-// they are recomputed to balance the
-// work measured on each rank, when its imbalance grows past a threshold.
+// Space is cut by recursive bisection over the cells of the canonical grid
+// (cell size = influence radius): the ranks are halved, and so is their piece
+// of space, across its longest side, until each rank has a box of cells, so a
+// cell and all its particles belong to one rank, and pieces stay about as
+// wide as they are long (the halo, and so the bytes a rank sends, grows with
+// a piece's surface). The cuts start with about equal particle counts (from a
+// sample of every rank's); later they are recomputed to balance the work
+// measured on each rank, when its imbalance grows past a threshold. Cell keys
+// along a Z-order (Morton) curve order the sample and name cells.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -68,72 +71,144 @@ public:
     return keyOf(cellOf(Vec<double, D>(p)));
   }
 
-  int ownerOf(std::uint64_t key) const {
-    return int(std::upper_bound(splitters_.begin(), splitters_.end(), key) - splitters_.begin());
+  /// The rank that owns a cell: the leaf of the bisection tree it falls in.
+  int ownerOf(const Cell &c) const {
+    int node = nodes_.empty() ? -1 : 0;
+    while (node >= 0) {
+      const Cut &cut = nodes_[std::size_t(node)];
+      node = c[std::size_t(cut.axis)] < cut.at ? cut.below : cut.above;
+    }
+    return -node - 1;
   }
 
-  /// Searches since the splitters were last set (redistribute counts them).
+  /// The rank that owns the cell a position lies in.
+  template <typename PosT> int ownerAt(const PosT &p) const {
+    return ownerOf(cellOf(Vec<double, D>(p)));
+  }
+
+  /// Searches since the domain was last balanced (redistribute counts them).
   int &searchesSinceBalance() { return searches_; }
 
-  /// Splitters from a weighted sample of every rank's keys (collective), so
-  /// that every rank gets about the same work. `work` is this rank's measured
-  /// work (busySeconds); within a rank, a particle's share of it grows with the
-  /// particles sharing its cell (its neighbours grow with them: water at a
-  /// free surface costs less than water at depth).
-  void balance(std::vector<std::uint64_t> localKeys, double work) {
+  /// A new bisection from a weighted sample of every rank's cells (collective),
+  /// so that every rank gets about the same work. `work` is this rank's
+  /// measured work (busySeconds); within a rank, a particle's share of it
+  /// grows with the particles sharing its cell (its neighbours grow with them:
+  /// water at a free surface costs less than water at depth).
+  void balance(const std::vector<Cell> &localCells, double work) {
     searches_ = 0;
-    std::sort(localKeys.begin(), localKeys.end());
+    // Sampled along the Z-order curve, so that the sample covers space evenly.
+    std::vector<std::pair<std::uint64_t, std::size_t>> byKey(localCells.size());
+    for (std::size_t k = 0; k < localCells.size(); ++k)
+      byKey[k] = {keyOf(localCells[k]), k};
+    std::sort(byKey.begin(), byKey.end());
     // Every rank receives every rank's samples: 1024 each up to 64 ranks,
-    // then fewer (64 at least), 64 Ki samples (1 MiB) in all.
+    // then fewer (64 at least), 64 Ki samples in all.
     const std::size_t perRank = std::clamp<std::size_t>(65536 / std::size_t(ranks()), 64, 1024);
-    const std::size_t n = localKeys.size(), samples = std::min<std::size_t>(n, perRank);
+    const std::size_t n = byKey.size(), samples = std::min<std::size_t>(n, perRank);
     // ahead[k]: the cell-share weight of the particles before k in key order.
     std::vector<double> ahead(n);
     double sum = 0.0;
     for (std::size_t k = 0; k < n;) {
       std::size_t end = k;
-      while (end < n && localKeys[end] == localKeys[k])
+      while (end < n && byKey[end].first == byKey[k].first)
         ++end;
       const double share = double(end - k);
       for (std::size_t j = k; j < end; ++j, sum += share)
         ahead[j] = sum;
       k = end;
     }
-    std::vector<std::uint64_t> sample;
+    std::vector<std::uint64_t> sample; // D coordinates a sample
     std::vector<double> weight;
     for (std::size_t s = 0; s < samples; ++s) {
       const double target = sum * double(s) / double(samples);
       const std::size_t k =
           std::size_t(std::upper_bound(ahead.begin(), ahead.end(), target) - ahead.begin()) - 1;
-      sample.push_back(localKeys[k]);
+      for (int a = 0; a < D; ++a)
+        sample.push_back(std::uint64_t(localCells[byKey[k].second][std::size_t(a)]));
       weight.push_back(work / double(samples));
     }
-    std::vector<std::uint64_t> keys = allgatherv(sample);
-    std::vector<double> weights = allgatherv(weight);
-    std::vector<std::size_t> order(keys.size());
-    for (std::size_t k = 0; k < order.size(); ++k)
-      order[k] = k;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return keys[a] != keys[b] ? keys[a] < keys[b] : a < b;
-    });
-    double total = 0;
-    for (double w : weights)
-      total += w;
-    splitters_.assign(ranks() - 1, ~std::uint64_t(0));
-    double before = 0;
-    int next = 1;
-    for (std::size_t k : order) {
-      while (next < ranks() && before >= total * next / ranks())
-        splitters_[next++ - 1] = keys[k];
-      before += weights[k];
-    }
+    const std::vector<std::uint64_t> coordinates = allgatherv(sample);
+    Samples all;
+    all.weight = allgatherv(weight);
+    all.cell.resize(all.weight.size());
+    for (std::size_t k = 0; k < all.cell.size(); ++k)
+      for (int a = 0; a < D; ++a)
+        all.cell[k][std::size_t(a)] = std::int64_t(coordinates[k * D + std::size_t(a)]);
+    std::vector<std::size_t> every(all.cell.size());
+    for (std::size_t k = 0; k < every.size(); ++k)
+      every[k] = k;
+    nodes_.clear();
+    bisect(all, every, 0, ranks());
   }
 
 private:
+  /// Cells with coordinate < at on `axis` lie below the cut; a child >= 0 is
+  /// a node, a negative child -r - 1 is rank r.
+  struct Cut {
+    int axis = 0;
+    std::int64_t at = 0;
+    int below = -1, above = -1;
+  };
+  struct Samples {
+    std::vector<Cell> cell;
+    std::vector<double> weight;
+  };
+
   static Cell filled(std::int64_t v) {
     Cell c;
     c.fill(v);
     return c;
+  }
+
+  /// Recursive bisection: ranks [first, last) share the samples `at`; the
+  /// first half of the ranks gets the cells below a cut across the longest
+  /// side of the samples' box, placed where the weight below comes closest to
+  /// their share. Every rank computes the same tree from the same samples.
+  /// Returns the child to store: a node, or -rank - 1.
+  int bisect(const Samples &all, std::vector<std::size_t> at, int first, int last) {
+    if (last - first == 1)
+      return -first - 1;
+    const int lower = (last - first) / 2;
+    int axis = 0;
+    std::int64_t longest = -1;
+    for (int a = 0; a < D && !at.empty(); ++a) {
+      std::int64_t lo = all.cell[at[0]][std::size_t(a)], hi = lo;
+      for (std::size_t k : at) {
+        lo = std::min(lo, all.cell[k][std::size_t(a)]);
+        hi = std::max(hi, all.cell[k][std::size_t(a)]);
+      }
+      if (hi - lo > longest)
+        longest = hi - lo, axis = a;
+    }
+    const std::size_t A = std::size_t(axis);
+    std::sort(at.begin(), at.end(), [&](std::size_t x, std::size_t y) {
+      return all.cell[x][A] != all.cell[y][A] ? all.cell[x][A] < all.cell[y][A] : x < y;
+    });
+    double total = 0.0;
+    for (std::size_t k : at)
+      total += all.weight[k];
+    const double target = total * double(lower) / double(last - first);
+    // Candidate cuts: each sample's coordinate (the weight strictly below it)
+    // and one past the last.
+    std::int64_t cut = at.empty() ? 0 : all.cell[at.back()][A] + 1;
+    double best = at.empty() ? 0.0 : std::abs(total - target), below = 0.0;
+    std::size_t split = at.size();
+    for (std::size_t k = 0; k < at.size(); ++k) {
+      if (k == 0 || all.cell[at[k]][A] != all.cell[at[k - 1]][A]) {
+        if (std::abs(below - target) < best)
+          best = std::abs(below - target), cut = all.cell[at[k]][A], split = k;
+      }
+      below += all.weight[at[k]];
+    }
+    const int node = int(nodes_.size());
+    nodes_.push_back({axis, cut, 0, 0});
+    std::vector<std::size_t> above(at.begin() + std::ptrdiff_t(split), at.end());
+    at.resize(split);
+    const int belowChild = bisect(all, std::move(at), first, first + lower);
+    const int aboveChild = bisect(all, std::move(above), first + lower, last);
+    nodes_[std::size_t(node)].below = belowChild;
+    nodes_[std::size_t(node)].above = aboveChild;
+    return node;
   }
 
   /// The 21 low bits of v, moved to every D-th bit.
@@ -159,7 +234,7 @@ private:
   double cellSize_ = 1.0;
   Cell origin_ = filled(-offset); ///< the cell of key coordinate 0
   int searches_ = 0;
-  std::vector<std::uint64_t> splitters_; ///< rank r owns [splitters[r-1], splitters[r])
+  std::vector<Cut> nodes_; ///< the bisection tree, its root first; none: rank 0 owns all
 };
 
 } // namespace wash::mpi

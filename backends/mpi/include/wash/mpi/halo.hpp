@@ -17,11 +17,13 @@
 #include <wash/mpi/comm.hpp>
 #include <wash/mpi/domain.hpp>
 #include <wash/mpi/for_each.hpp>
+#include <wash/mpi/pair_reach.hpp>
 #include <wash/detail/run_output.hpp>
 
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 namespace wash::mpi {
@@ -121,7 +123,7 @@ void migrate(Particles &P, const Domain<D> &domain, HaloPlan &plan) {
   std::vector<std::vector<Index>> send(n);
   std::vector<Index> keep;
   for (Index i = 0; i < P.size(); ++i) {
-    int owner = domain.ownerOf(domain.keyAt(P.pos[i]));
+    int owner = domain.ownerAt(P.pos[i]);
     (owner == me ? keep : send[owner]).push_back(i);
   }
   std::vector<std::size_t> counts(n);
@@ -173,10 +175,10 @@ void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolera
     const double busy = busySeconds();
     const double busiest = allreduceMax(busy), total = allreduceSum(busy);
     if (busiest > tolerance * total / ranks()) {
-      std::vector<std::uint64_t> keys(P.size());
+      std::vector<typename Domain<D>::Cell> cells(P.size());
       for (Index i = 0; i < P.size(); ++i)
-        keys[i] = domain.keyAt(P.pos[i]);
-      domain.balance(std::move(keys), busy);
+        cells[i] = domain.cellOf(Vec<double, D>(P.pos[i]));
+      domain.balance(cells, busy);
       busySeconds() = 0.0;
     }
   }
@@ -184,14 +186,15 @@ void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolera
 }
 
 /// Builds the halo for a new neighbour search: every owned particle (or local
-/// periodic image) within the radius of another rank's cell is copied there,
-/// with the columns `fields` visits (id and pos must be among them). Call after
-/// redistribute and addImages: positions [0, plan.owned.size()) are owned, the
-/// rest up to P.size() are images.
-template <int D, typename Particles, typename Fields>
-void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &plan,
-               Fields fields) {
+/// periodic image) that can pair with a particle of another rank's cell
+/// (pair_reach.hpp) is copied there, with the columns `fields` visits (id and
+/// pos must be among them). Call after redistribute and addImages: positions
+/// [0, plan.owned.size()) are owned, the rest up to P.size() are images.
+template <int D, typename Particles, typename SmoothingLength, typename Fields>
+void buildHalo(Particles &P, const Domain<D> &domain, const RowReach<SmoothingLength> &reachOf,
+               const ::wash::detail::Box &box, HaloPlan &plan, Fields fields) {
   const int n = ranks(), me = rank();
+  const double radius = reachOf.at.reach;
   const std::size_t owned = P.size(); // senders: owned particles and images
   using Cell = typename Domain<D>::Cell;
   const double cellSize = domain.cellSize();
@@ -232,12 +235,18 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
     return index;
   };
   std::vector<int> ownerCache(dense ? cells : 0, -1);
+  auto inBox = [&](const Cell &cell) {
+    for (int a = 0; a < D; ++a)
+      if (cell[a] < lo[a] || cell[a] > hi[a])
+        return false;
+    return true;
+  };
   auto ownerOf = [&](const Cell &cell) {
-    if (!dense)
-      return domain.ownerOf(domain.keyOf(cell));
+    if (!dense || !inBox(cell))
+      return domain.ownerOf(cell);
     int &owner = ownerCache[denseIndex(cell)];
     if (owner < 0)
-      owner = domain.ownerOf(domain.keyOf(cell));
+      owner = domain.ownerOf(cell);
     return owner;
   };
   // A particle's stencil lies within `reach` cells of its own cell (one more
@@ -262,6 +271,65 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
     });
     return known == 1;
   };
+  // The largest search radius of this rank's cells near another rank's, to
+  // those ranks; theirs, from them. Near a periodic face, the ranks across it
+  // hold images near the cell (addImages): a cell there is walked around its
+  // image too.
+  auto faceShift = [&](const Cell &cell, int a) {
+    const double margin = double(reach + 1) * cellSize;
+    if (!box.periodic[a])
+      return 0;
+    if (double(cell[a] + 1) * cellSize - box.lo[a] <= margin)
+      return 1;
+    return box.hi[a] - double(cell[a]) * cellSize <= margin ? -1 : 0;
+  };
+  auto nearFace = [&](const Cell &cell) {
+    for (int a = 0; a < D; ++a)
+      if (faceShift(cell, a))
+        return true;
+    return false;
+  };
+  using Largest = typename CellReach<D>::Largest;
+  std::unordered_map<std::uint64_t, Largest> mine;
+  for (Index i : plan.owned) {
+    const Cell cell = domain.cellOf(Vec<double, D>(P.pos[i]));
+    if (dense && interior(cell) && !nearFace(cell))
+      continue;
+    Largest &largest = mine.try_emplace(domain.keyOf(cell), Largest{cell, 0.0}).first->second;
+    largest.radius = std::max(largest.radius, reachOf.search(i));
+  }
+  CellReach<D> theirs;
+  theirs.exchange(mine, [&](const Cell &cell, std::vector<int> &near) {
+    auto walkAround = [&](const Cell &centre, std::int64_t width) {
+      Cell first, last;
+      for (int a = 0; a < D; ++a)
+        first[a] = centre[a] - width, last[a] = centre[a] + width;
+      detail::forEachCellIn(first, last, [&](const Cell &x) {
+        const int owner = ownerOf(x);
+        if (owner != me && std::find(near.begin(), near.end(), owner) == near.end())
+          near.push_back(owner);
+        return true;
+      });
+    };
+    walkAround(cell, reach);
+    std::array<int, D> shift{}, pick{};
+    for (int a = 0; a < D; ++a)
+      shift[a] = faceShift(cell, a);
+    while (true) { // every nonzero combination of the faces the cell is near
+      int a = 0;
+      while (a < D && (pick[a] == 1 || shift[a] == 0))
+        pick[a] = 0, ++a;
+      if (a == D)
+        break;
+      pick[a] = 1;
+      Cell image = cell;
+      for (int b = 0; b < D; ++b)
+        if (pick[b])
+          image[b] = wash::detail::cellCoordinate(
+              box.shifted((double(cell[b]) + 0.5) * cellSize, shift[b], b), cellSize);
+      walkAround(image, reach + 1); // + 1: the image of a cell straddles two
+    }
+  });
   std::vector<std::vector<Index>> send(n);
   std::vector<int> seen;
   for (Index i = 0; i < owned; ++i) {
@@ -270,9 +338,13 @@ void buildHalo(Particles &P, const Domain<D> &domain, double radius, HaloPlan &p
       continue;
     stencil(p, from, to);
     seen.assign(1, me);
+    const double own = reachOf.sender(i);
     detail::forEachCellIn(from, to, [&](const Cell &cell) {
       const int owner = ownerOf(cell);
-      if (std::find(seen.begin(), seen.end(), owner) == seen.end()) {
+      if (std::find(seen.begin(), seen.end(), owner) != seen.end())
+        return true;
+      const double largest = theirs.largestAt(domain.keyOf(cell));
+      if (largest >= 0.0 && withinOfCell<D>(p, cell, cellSize, std::max(own, largest))) {
         seen.push_back(owner);
         send[owner].push_back(i);
       }

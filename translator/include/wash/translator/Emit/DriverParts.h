@@ -76,6 +76,11 @@ std::string kernelComment(const Model &M, unsigned K);
 /// or from the smoothing lengths (Backend::combineMax joins processes' maxima).
 std::string searchGeometryText(const CodePlan &Plan, const Kernel &K);
 
+/// Under the smoothing-length rule, `, <callable h(row)>` for the backend's
+/// search (a distributed halo reaches only as far as each particle's pairs);
+/// empty under the influence-radius rule.
+std::string smoothingLengthAccessor(const CodePlan &Plan);
+
 /// The cell size of the backend's domain decomposition, as a callable the
 /// backend calls only if it decomposes: the influence radius, or the largest
 /// support radius at the start.
