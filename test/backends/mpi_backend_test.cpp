@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <numeric>
 #include <string>
@@ -107,5 +108,54 @@ TEST(MpiBackend, InitKernelsThatDifferAcrossRanksAreAnError) {
     EXPECT_THROW(backend.distribute(P, [] { return 1.0; }), wash::detail::RunError);
   }
 }
+
+// A line of 40 particles one apart, x = id: particle 0 has a support radius
+// of 10, every other one of 0.5, so the only pairs are (0, j) for j <= 10.
+// Every rank's halo holds the particles its own pair with, and none further
+// than one cell (1) beyond a pair's radius, although the search reaches 10.
+void expectHaloOfPairs(bool symmetric) {
+  setenv("WASH_MPI_CREATION_BLOCK", "4", 1);
+  wash::mpi::Backend<2> backend;
+  wash::backend::MinimalParticles<2> P;
+  createLine(backend, P);
+  backend.distribute(P, [] { return 1.0; });
+  wash::backend::SearchGeometry at;
+  at.reach = 10.0;
+  at.support = 1.0; // radius = h
+  at.symmetric = symmetric;
+  auto radius = [](std::uint64_t id) { return id == 0 ? 10.0 : 0.5; };
+  backend.search(
+      P, at, wash::detail::Box{},
+      [&](auto send) {
+        send(P.id);
+        send(P.pos);
+      },
+      [&P, &radius](Index row) { return radius(P.id[row]); });
+  std::vector<char> isOwned(P.size(), 0);
+  for (Index i : backend.owned())
+    isOwned[i] = 1;
+  std::vector<std::uint64_t> mine, ghosts;
+  for (Index row = 0; row < P.size(); ++row)
+    (isOwned[row] ? mine : ghosts).push_back(P.id[row]);
+  // Within `slack` of a pair with one of this rank's particles.
+  auto pairsWithMine = [&](std::uint64_t j, double slack) {
+    for (std::uint64_t i : mine) {
+      const double pair = symmetric ? std::max(radius(i), radius(j)) : radius(i);
+      if (std::abs(double(i) - double(j)) <= pair + slack)
+        return true;
+    }
+    return false;
+  };
+  for (std::uint64_t j = 0; j < 40; ++j)
+    if (std::find(mine.begin(), mine.end(), j) == mine.end() && pairsWithMine(j, 0.0))
+      EXPECT_NE(std::find(ghosts.begin(), ghosts.end(), j), ghosts.end())
+          << "rank " << wash::mpi::rank() << " lacks particle " << j;
+  for (std::uint64_t j : ghosts)
+    EXPECT_TRUE(pairsWithMine(j, 1.0)) << "rank " << wash::mpi::rank() << " holds particle " << j
+                                       << ", which pairs with none of its own";
+}
+
+TEST(MpiBackend, AHaloHoldsWhatPairsReachUnderTheSymmetricRule) { expectHaloOfPairs(true); }
+TEST(MpiBackend, AHaloHoldsWhatPairsReachUnderTheGatherRule) { expectHaloOfPairs(false); }
 
 } // namespace
