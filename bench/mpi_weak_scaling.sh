@@ -1,10 +1,10 @@
 #!/bin/bash
 # mpi_weak_scaling.sh: weak scaling of the MPI program, a fixed number of
 # particles per rank, on P = 1, 2, 4 ranks of 1 OpenMP thread, for two scenes:
-# - strip: bench/scenes/taylor_green_strip.cpp, a row of P periodic unit
-#   squares of SIDE^2 particles (512^2 = 262 144 a rank): every rank's piece
-#   has the same shape and the same neighbours at every P, so the busiest
-#   rank's bytes should stay flat as ranks are added;
+# - strip: examples/taylor_green as a row of P periodic unit squares of
+#   SIDE^2 particles (`taylor_green-mpi SIDE P`; 512^2 = 262 144 a rank):
+#   every rank's piece has the same shape and the same neighbours at every P,
+#   so the busiest rank's bytes should stay flat as ranks are added;
 # - seed: the seed scene scaled to P * PER particles (ca_fluid_sim_<N>-mpi,
 #   bench/CMakeLists.txt WASH_BENCH_SIZES), a square of water whose pieces
 #   change shape with P (one cut at 2 ranks, quadrants at 4).
@@ -53,7 +53,7 @@ printf '%6s %5s %9s %6s %10s %12s %12s %12s %14s %18s\n' scene ranks particles s
 for scene in $scenes; do
   for p in $ranks_list; do
     case $scene in
-      strip) row strip "$p" $((p * side * side)) "$bin/taylor_green_strip-mpi" "$p" "$side" ;;
+      strip) row strip "$p" $((p * side * side)) "$bin/taylor_green-mpi" "$side" "$p" ;;
       seed) row seed "$p" $((p * per)) "$bin/ca_fluid_sim_$((p * per))-mpi" ;;
       *) echo "mpi_weak_scaling.sh: unknown scene $scene" >&2; exit 2 ;;
     esac
