@@ -107,14 +107,36 @@ inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &ne
                                                ideal_gas_sound_speed(s.gamma, pressure, rho), h));
 }
 
+/// wendland_c2::dWdr's factor of h alone, -105 / (16 pi h^4) in 3D: a
+/// function of one particle's h, which the translator computes once per
+/// neighbour rather than once per pair (non-template, so that it can).
+inline double wendland_c2_gradient_norm(double h) {
+  return wash::dimensions == 2 ? -35.0 / (4.0 * PI * h * h * h)
+                               : -105.0 / (16.0 * PI * h * h * h * h);
+}
+
+/// wendland_c2::dWdr(r, h) bit for bit, given norm =
+/// wendland_c2_gradient_norm(h): the same operations in the same order.
+inline double wendland_c2_dWdr(double r, double h, double norm) {
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q;
+  return norm * q * s * s * s;
+}
+
 /// Pressure and viscous accelerations, du/dt (with conduction), and the
-/// particle's Courant time step.
+/// particle's Courant time step. The neighbour's terms of one particle alone
+/// (its kernel-gradient norm, P_j / rho_j^2) are written apart so that the
+/// translator hoists them out of the pair loop; the pair terms are those of
+/// momentum_factor and wendland_c2::dWdr, bit for bit.
 inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
                        const GasScheme &s) {
   const wash::ParticleVec pos = p.get_pos(), vel = p.get_vel();
   const double hi = p.get_smoothing_length(), rhoi = p.get_density();
   const double Pi = p.get_force_scalar("pressure"), ci = ideal_gas_sound_speed(s.gamma, Pi, rhoi);
   const double ui = ideal_gas_energy(s.gamma, Pi, rhoi), fi = p.get_force_scalar("balsara");
+  const double normi = wendland_c2_gradient_norm(hi), Pi_rho2 = Pi / (rhoi * rhoi);
   wash::ParticleVec acc{};
   double energyRate = 0.0, vsig = ci;
   for (const auto &n : neighbours) {
@@ -132,7 +154,8 @@ inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &nei
     const double m = n.get_mass(), rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
     const double cj = ideal_gas_sound_speed(s.gamma, Pj, rhoj);
     const double uj = ideal_gas_energy(s.gamma, Pj, rhoj);
-    const double dWij = 0.5 * (wendland_c2::dWdr(r, hi) + wendland_c2::dWdr(r, hj));
+    const double normj = wendland_c2_gradient_norm(n.get_smoothing_length()), Pj_rho2 = Pj / (rhoj * rhoj);
+    const double dWij = 0.5 * (wendland_c2_dWdr(r, hi, normi) + wendland_c2_dWdr(r, hj, normj));
     const wash::ParticleVec gradW = gradient(d, r, dWij), dv = vel - n.get_vel();
     const double vr = dv.dot(d), rhoij = 0.5 * (rhoi + rhoj);
     double viscosity = 0.0;
@@ -142,8 +165,8 @@ inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &nei
       viscosity = monaghan_viscosity(s.alpha, s.beta, ci, cj, mu, rhoij, balsara);
     }
     vsig = std::max(vsig, signal_velocity(ci, cj, vr, r));
-    acc -= gradW * momentum_factor(m, Pi, rhoi, Pj, rhoj, viscosity);
-    energyRate += energy_factor(m, Pi, rhoi, viscosity) * dv.dot(gradW);
+    acc -= gradW * (m * (Pi_rho2 + Pj_rho2 + viscosity)); // momentum_factor
+    energyRate += m * (Pi_rho2 + 0.5 * viscosity) * dv.dot(gradW); // energy_factor
     // conduction: u diffuses down its gradient at speed sqrt(|P_i - P_j| / rho)
     energyRate += price_conductivity(m, s.alphaConductivity, Pi, Pj, ui, uj, rhoij, dWij);
   }
