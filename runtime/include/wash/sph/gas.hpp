@@ -125,51 +125,117 @@ inline double wendland_c2_dWdr(double r, double h, double norm) {
   return norm * q * s * s * s;
 }
 
-/// Pressure and viscous accelerations, du/dt (with conduction), and the
-/// particle's Courant time step. The neighbour's terms of one particle alone
-/// (its kernel-gradient norm, P_j / rho_j^2) are written apart so that the
-/// translator hoists them out of the pair loop; the pair terms are those of
-/// momentum_factor and wendland_c2::dWdr, bit for bit.
-inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
-                       const GasScheme &s) {
-  const wash::ParticleVec pos = p.get_pos(), vel = p.get_vel();
-  const double hi = p.get_smoothing_length(), rhoi = p.get_density();
-  const double Pi = p.get_force_scalar("pressure"), ci = ideal_gas_sound_speed(s.gamma, Pi, rhoi);
-  const double ui = ideal_gas_energy(s.gamma, Pi, rhoi), fi = p.get_force_scalar("balsara");
-  const double normi = wendland_c2_gradient_norm(hi), Pi_rho2 = Pi / (rhoi * rhoi);
-  wash::ParticleVec acc{};
-  double energyRate = 0.0, vsig = ci;
-  for (const auto &n : neighbours) {
-    wash::ParticleVec d = pos - n.get_pos();
-    const double r = d.magnitude(), hj = n.get_smoothing_length();
+/// The pair terms of gas_forces for a block of neighbours, gathered in list
+/// order (ForcesBlock::add), then computed pair by pair with no dependence
+/// between pairs (ForcesBlock::compute: a loop the compiler vectorises, two or
+/// four divisions and square roots at a time) and summed in list order
+/// (ForcesBlock::sum). Each term is the same expression as in one loop over
+/// the list, and the sums keep its order: the same bits.
+struct ForcesBlock {
+  static constexpr int size = 32;
+  // gathered: the particle's own values and, per pair, the neighbour's
+  double hi, rhoi, Pi, ci, ui, fi, normi, Pi_rho2;
+  wash::ParticleVec d[size], dv[size];
+  double d2[size], hj[size], m[size], Pj[size], cj[size], uj[size], normj[size], Pj_rho2[size],
+      rhoj[size], vr[size], fj[size];
+  // computed
+  double g[size], mf[size], ef[size], conduction[size], signal[size];
+  double kept[size]; // 1 or 0: a double, so that the loop vectorises with SSE2
+  int count = 0;
+};
+
+/// ForcesBlock's pair terms, b.count of them.
+inline void gas_forces_compute(ForcesBlock &b, const GasScheme &s) {
+  const double hi = b.hi, rhoi = b.rhoi, Pi = b.Pi, ci = b.ci, ui = b.ui, fi = b.fi;
+  const double normi = b.normi, Pi_rho2 = b.Pi_rho2;
+  const double alpha = s.alpha, beta = s.beta, alphaConductivity = s.alphaConductivity;
+  const double searchSupport = s.searchSupport, pairReach = s.pairReach;
+  const bool gather = s.searchRule == wash::Support::Gather,
+             symmetric = s.searchRule == wash::Support::Symmetric;
+  for (int k = 0; k < b.count; k++) {
+    const double r = std::sqrt(b.d2[k]), hj = b.hj[k], m = b.m[k], Pj = b.Pj[k], cj = b.cj[k];
     // Both particles of a pair must add the same pair terms, which conserves
     // momentum and energy: the symmetric rule lists i and j in each other's
     // lists (and pairReach cuts both alike); under the gather rule a pair
     // interacts only if each particle is in the other's search sphere.
-    if (r <= 0.0 || (s.searchRule == wash::Support::Gather &&
-                     d.dot(d) > (s.searchSupport * hj) * (s.searchSupport * hj)))
-      continue;
-    if (s.searchRule == wash::Support::Symmetric && r > s.pairReach * std::min(hi, hj))
-      continue;
-    const double m = n.get_mass(), rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
-    const double cj = ideal_gas_sound_speed(s.gamma, Pj, rhoj);
-    const double uj = ideal_gas_energy(s.gamma, Pj, rhoj);
-    const double normj = wendland_c2_gradient_norm(n.get_smoothing_length()), Pj_rho2 = Pj / (rhoj * rhoj);
-    const double dWij = 0.5 * (wendland_c2_dWdr(r, hi, normi) + wendland_c2_dWdr(r, hj, normj));
-    const wash::ParticleVec gradW = gradient(d, r, dWij), dv = vel - n.get_vel();
-    const double vr = dv.dot(d), rhoij = 0.5 * (rhoi + rhoj);
-    double viscosity = 0.0;
-    if (vr < 0.0) { // approaching
-      double hij = 0.5 * (hi + hj), mu = monaghan_mu(hij, vr, r);
-      double balsara = 0.5 * (fi + n.get_force_scalar("balsara"));
-      viscosity = monaghan_viscosity(s.alpha, s.beta, ci, cj, mu, rhoij, balsara);
-    }
-    vsig = std::max(vsig, signal_velocity(ci, cj, vr, r));
-    acc -= gradW * (m * (Pi_rho2 + Pj_rho2 + viscosity)); // momentum_factor
-    energyRate += m * (Pi_rho2 + 0.5 * viscosity) * dv.dot(gradW); // energy_factor
+    b.kept[k] = r <= 0.0 || (gather && b.d2[k] > (searchSupport * hj) * (searchSupport * hj)) ||
+                        (symmetric && r > pairReach * std::min(hi, hj))
+                    ? 0.0
+                    : 1.0;
+    const double dWij =
+        0.5 * (wendland_c2_dWdr(r, hi, normi) + wendland_c2_dWdr(r, hj, b.normj[k]));
+    b.g[k] = dWij / r; // gradient(d, r, dWij) = d * g
+    const double vr = b.vr[k], rhoij = 0.5 * (rhoi + b.rhoj[k]);
+    const double hij = 0.5 * (hi + hj), mu = monaghan_mu(hij, vr, r);
+    const double balsara = 0.5 * (fi + b.fj[k]);
+    // approaching (vr < 0): viscosity
+    const double viscosity =
+        vr < 0.0 ? monaghan_viscosity(alpha, beta, ci, cj, mu, rhoij, balsara) : 0.0;
+    b.signal[k] = signal_velocity(ci, cj, vr, r);
+    b.mf[k] = m * (Pi_rho2 + b.Pj_rho2[k] + viscosity); // momentum_factor
+    b.ef[k] = m * (Pi_rho2 + 0.5 * viscosity);          // energy_factor
     // conduction: u diffuses down its gradient at speed sqrt(|P_i - P_j| / rho)
-    energyRate += price_conductivity(m, s.alphaConductivity, Pi, Pj, ui, uj, rhoij, dWij);
+    b.conduction[k] = price_conductivity(m, alphaConductivity, Pi, Pj, ui, b.uj[k], rhoij, dWij);
   }
+}
+
+/// Adds ForcesBlock's pair terms to the sums, in list order; empties it.
+inline void gas_forces_sum(ForcesBlock &b, const GasScheme &s, wash::ParticleVec &acc,
+                           double &energyRate, double &vsig) {
+  gas_forces_compute(b, s);
+  for (int k = 0; k < b.count; k++) {
+    if (b.kept[k] == 0.0)
+      continue;
+    const wash::ParticleVec gradW = b.d[k] * b.g[k];
+    vsig = std::max(vsig, b.signal[k]);
+    acc -= gradW * b.mf[k];
+    energyRate += b.ef[k] * b.dv[k].dot(gradW);
+    energyRate += b.conduction[k];
+  }
+  b.count = 0;
+}
+
+/// Pressure and viscous accelerations, du/dt (with conduction), and the
+/// particle's Courant time step. The neighbour's terms of one particle alone
+/// (its kernel-gradient norm, P_j / rho_j^2, sound speed, energy) are written
+/// apart so that the translator hoists them out of the pair loop; the pair
+/// terms are computed a block of neighbours at a time (ForcesBlock).
+inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
+                       const GasScheme &s) {
+  const wash::ParticleVec pos = p.get_pos(), vel = p.get_vel();
+  ForcesBlock b;
+  const double hi = p.get_smoothing_length(), rhoi = p.get_density();
+  const double Pi = p.get_force_scalar("pressure"), ci = ideal_gas_sound_speed(s.gamma, Pi, rhoi);
+  b.hi = hi;
+  b.rhoi = rhoi;
+  b.Pi = Pi;
+  b.ci = ci;
+  b.ui = ideal_gas_energy(s.gamma, Pi, rhoi);
+  b.fi = p.get_force_scalar("balsara");
+  b.normi = wendland_c2_gradient_norm(hi);
+  b.Pi_rho2 = Pi / (rhoi * rhoi);
+  wash::ParticleVec acc{};
+  double energyRate = 0.0, vsig = ci;
+  for (const auto &n : neighbours) {
+    const int k = b.count;
+    const double rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
+    b.d[k] = pos - n.get_pos();
+    b.dv[k] = vel - n.get_vel();
+    b.d2[k] = b.d[k].dot(b.d[k]);
+    b.vr[k] = b.dv[k].dot(b.d[k]);
+    b.hj[k] = n.get_smoothing_length();
+    b.m[k] = n.get_mass();
+    b.rhoj[k] = rhoj;
+    b.Pj[k] = Pj;
+    b.cj[k] = ideal_gas_sound_speed(s.gamma, Pj, rhoj);
+    b.uj[k] = ideal_gas_energy(s.gamma, Pj, rhoj);
+    b.normj[k] = wendland_c2_gradient_norm(n.get_smoothing_length());
+    b.Pj_rho2[k] = Pj / (rhoj * rhoj);
+    b.fj[k] = n.get_force_scalar("balsara");
+    if (++b.count == ForcesBlock::size)
+      gas_forces_sum(b, s, acc, energyRate, vsig);
+  }
+  gas_forces_sum(b, s, acc, energyRate, vsig);
   p.set_acc(acc);
   p.set_force_scalar("energy_rate", energyRate);
   p.set_force_scalar("time_step", courant_time_step(s.courant, hi, vsig));
