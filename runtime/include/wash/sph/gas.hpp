@@ -144,7 +144,13 @@ struct ForcesBlock {
   int count = 0;
 };
 
-/// ForcesBlock's pair terms, b.count of them.
+/// ForcesBlock's pair terms, b.count of them. Compiled twice, for AVX2
+/// (four doubles a vector) and for any x86-64 (two), the one the processor
+/// runs chosen when the program starts: separate multiplications and
+/// additions either way (no FMA: -ffp-contract=off), so the same bits.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("avx2", "default")))
+#endif
 inline void gas_forces_compute(ForcesBlock &b, const GasScheme &s) {
   const double hi = b.hi, rhoi = b.rhoi, Pi = b.Pi, ci = b.ci, ui = b.ui, fi = b.fi;
   const double normi = b.normi, Pi_rho2 = b.Pi_rho2;
