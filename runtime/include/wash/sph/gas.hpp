@@ -77,8 +77,62 @@ inline void gas_smoothing_length(wash::Particle &p, double hFactor, double hMin,
   p.set_smoothing_length(std::min(std::max(h, hMin), hMax));
 }
 
+/// The compilers and processors gas_density_compute and gas_forces_compute
+/// are compiled twice for: for AVX2 (four doubles a vector) and for any
+/// x86-64 (two), the one the processor runs chosen when the program starts.
+/// Separate multiplications and additions either way (no FMA:
+/// -ffp-contract=off), so the same bits.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#define WASH_SPH_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define WASH_SPH_VECTOR_CLONES
+#endif
+
+/// gas_density's pair terms for a block of neighbours, gathered in list
+/// order, then computed pair by pair with no dependence between pairs
+/// (gas_density_compute: a loop the compiler vectorises, two or four square
+/// roots and divisions at a time) and summed in list order (gas_density_sum).
+/// Each term is the same expression as in one loop over the list, and the
+/// sums keep its order: the same bits.
+struct DensityBlock {
+  static constexpr int size = 32;
+  double h;
+  wash::ParticleVec d[size], dv[size];
+  double d2[size], m[size];
+  double kept[size], mW[size], g[size]; // kept: 1 or 0, a double so that the loop vectorises
+  int count = 0;
+};
+
+/// DensityBlock's pair terms, b.count of them.
+WASH_SPH_VECTOR_CLONES inline void gas_density_compute(DensityBlock &b) {
+  const double h = b.h;
+  for (int k = 0; k < b.count; k++) {
+    const double r = std::sqrt(b.d2[k]);
+    b.kept[k] = r >= wendland_c2::support * h || r <= 0.0 ? 0.0 : 1.0;
+    b.mW[k] = b.m[k] * wendland_c2::W(r, h);
+    b.g[k] = wendland_c2::dWdr(r, h) / r; // gradient(d, r, dWdr) = d * g
+  }
+}
+
+/// Adds DensityBlock's pair terms to the sums, in list order; empties it.
+template <typename Curl>
+void gas_density_sum(DensityBlock &b, double &rho, double &div, Curl &curl) {
+  gas_density_compute(b);
+  for (int k = 0; k < b.count; k++) {
+    if (b.kept[k] == 0.0)
+      continue;
+    rho += b.mW[k];
+    const wash::ParticleVec gradW = b.d[k] * b.g[k];
+    div -= b.m[k] * b.dv[k].dot(gradW);
+    curl += cross(b.dv[k], gradW) * b.m[k];
+  }
+  b.count = 0;
+}
+
 /// Summation density (the particle's own weight scaled by 1 - selfCorrection),
-/// pressure, and the Balsara (1995) switch from the velocity divergence and curl.
+/// pressure, and the Balsara (1995) switch from the velocity divergence and
+/// curl. The pair terms are computed a block of neighbours at a time
+/// (DensityBlock).
 inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
                         const GasScheme &s, double selfCorrection) {
   const double h = p.get_smoothing_length();
@@ -86,17 +140,18 @@ inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &ne
   double rho = (1.0 - selfCorrection) * p.get_mass() * wendland_c2::W(0.0, h);
   double div = 0.0;
   decltype(cross(vel, vel)) curl{};
+  DensityBlock b;
+  b.h = h;
   for (const auto &n : neighbours) {
-    wash::ParticleVec d = pos - n.get_pos();
-    double r = d.magnitude();
-    if (r >= wendland_c2::support * h || r <= 0.0)
-      continue;
-    rho += n.get_mass() * wendland_c2::W(r, h);
-    wash::ParticleVec gradW = gradient(d, r, wendland_c2::dWdr(r, h));
-    wash::ParticleVec dv = vel - n.get_vel();
-    div -= n.get_mass() * dv.dot(gradW);
-    curl += cross(dv, gradW) * n.get_mass();
+    const int k = b.count;
+    b.d[k] = pos - n.get_pos();
+    b.dv[k] = vel - n.get_vel();
+    b.d2[k] = b.d[k].dot(b.d[k]);
+    b.m[k] = n.get_mass();
+    if (++b.count == DensityBlock::size)
+      gas_density_sum(b, rho, div, curl);
   }
+  gas_density_sum(b, rho, div, curl);
   const double energy = p.get_force_scalar("energy");
   const double pressure = ideal_gas_pressure(s.gamma, rho, energy);
   div /= rho;
@@ -144,14 +199,8 @@ struct ForcesBlock {
   int count = 0;
 };
 
-/// ForcesBlock's pair terms, b.count of them. Compiled twice, for AVX2
-/// (four doubles a vector) and for any x86-64 (two), the one the processor
-/// runs chosen when the program starts: separate multiplications and
-/// additions either way (no FMA: -ffp-contract=off), so the same bits.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("avx2", "default")))
-#endif
-inline void gas_forces_compute(ForcesBlock &b, const GasScheme &s) {
+/// ForcesBlock's pair terms, b.count of them.
+WASH_SPH_VECTOR_CLONES inline void gas_forces_compute(ForcesBlock &b, const GasScheme &s) {
   const double hi = b.hi, rhoi = b.rhoi, Pi = b.Pi, ci = b.ci, ui = b.ui, fi = b.fi;
   const double normi = b.normi, Pi_rho2 = b.Pi_rho2;
   const double alpha = s.alpha, beta = s.beta, alphaConductivity = s.alphaConductivity;
