@@ -88,6 +88,28 @@ inline void gas_smoothing_length(wash::Particle &p, double hFactor, double hMin,
 #define WASH_SPH_VECTOR_CLONES
 #endif
 
+/// A block of vectors, one component a row (a column per pair): the layout a
+/// vectorised loop reads and writes. Left uninitialised, unlike Vec arrays.
+template <int N, int D> struct VectorBlock {
+  double c[D][N];
+  wash::ParticleVec get(int k) const {
+    wash::ParticleVec v;
+    for (int i = 0; i < D; i++)
+      *(v[i]) = c[i][k];
+    return v;
+  }
+  void set(int k, const wash::ParticleVec &v) {
+    for (int i = 0; i < D; i++)
+      c[i][k] = v.at(i);
+  }
+};
+
+/// Component i of a curl: a vector in 3D, a number in 2D.
+inline double curl_component(const wash::Vec<double, 3> &curl, int i) { return curl.at(i); }
+inline double curl_component(double curl, int) { return curl; }
+inline void add_to_curl_component(wash::Vec<double, 3> &curl, int i, double x) { *(curl[i]) += x; }
+inline void add_to_curl_component(double &curl, int, double x) { curl += x; }
+
 /// gas_density's pair terms for a block of neighbours, gathered in list
 /// order, then computed pair by pair with no dependence between pairs
 /// (gas_density_compute: a loop the compiler vectorises, two or four square
@@ -95,11 +117,14 @@ inline void gas_smoothing_length(wash::Particle &p, double hFactor, double hMin,
 /// Each term is the same expression as in one loop over the list, and the
 /// sums keep its order: the same bits.
 struct DensityBlock {
-  static constexpr int size = 32;
+  static constexpr int size = 32, dims = wash::ParticleVec::dimension;
+  using Curl = decltype(cross(wash::ParticleVec{}, wash::ParticleVec{}));
+  static constexpr int curlDims = dims == 3 ? 3 : 1;
   double h;
-  wash::ParticleVec d[size], dv[size];
-  double d2[size], m[size];
-  double kept[size], mW[size], g[size]; // kept: 1 or 0, a double so that the loop vectorises
+  VectorBlock<size, dims> d, dv; // gathered
+  double m[size];
+  double kept[size], mW[size], mDiv[size]; // kept: 1 or 0, a double so that the loop vectorises
+  double curl[curlDims][size];
   int count = 0;
 };
 
@@ -107,24 +132,28 @@ struct DensityBlock {
 WASH_SPH_VECTOR_CLONES inline void gas_density_compute(DensityBlock &b) {
   const double h = b.h;
   for (int k = 0; k < b.count; k++) {
-    const double r = std::sqrt(b.d2[k]);
+    const wash::ParticleVec d = b.d.get(k), dv = b.dv.get(k);
+    const double r = d.magnitude(), m = b.m[k];
     b.kept[k] = r >= wendland_c2::support * h || r <= 0.0 ? 0.0 : 1.0;
-    b.mW[k] = b.m[k] * wendland_c2::W(r, h);
-    b.g[k] = wendland_c2::dWdr(r, h) / r; // gradient(d, r, dWdr) = d * g
+    b.mW[k] = m * wendland_c2::W(r, h);
+    const wash::ParticleVec gradW = gradient(d, r, wendland_c2::dWdr(r, h));
+    b.mDiv[k] = m * dv.dot(gradW);
+    const DensityBlock::Curl curl = cross(dv, gradW) * m;
+    for (int i = 0; i < DensityBlock::curlDims; i++)
+      b.curl[i][k] = curl_component(curl, i);
   }
 }
 
 /// Adds DensityBlock's pair terms to the sums, in list order; empties it.
-template <typename Curl>
-void gas_density_sum(DensityBlock &b, double &rho, double &div, Curl &curl) {
+inline void gas_density_sum(DensityBlock &b, double &rho, double &div, DensityBlock::Curl &curl) {
   gas_density_compute(b);
   for (int k = 0; k < b.count; k++) {
     if (b.kept[k] == 0.0)
       continue;
     rho += b.mW[k];
-    const wash::ParticleVec gradW = b.d[k] * b.g[k];
-    div -= b.m[k] * b.dv[k].dot(gradW);
-    curl += cross(b.dv[k], gradW) * b.m[k];
+    div -= b.mDiv[k];
+    for (int i = 0; i < DensityBlock::curlDims; i++)
+      add_to_curl_component(curl, i, b.curl[i][k]);
   }
   b.count = 0;
 }
@@ -144,9 +173,8 @@ inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &ne
   b.h = h;
   for (const auto &n : neighbours) {
     const int k = b.count;
-    b.d[k] = pos - n.get_pos();
-    b.dv[k] = vel - n.get_vel();
-    b.d2[k] = b.d[k].dot(b.d[k]);
+    b.d.set(k, pos - n.get_pos());
+    b.dv.set(k, vel - n.get_vel());
     b.m[k] = n.get_mass();
     if (++b.count == DensityBlock::size)
       gas_density_sum(b, rho, div, curl);
@@ -181,21 +209,22 @@ inline double wendland_c2_dWdr(double r, double h, double norm) {
 }
 
 /// The pair terms of gas_forces for a block of neighbours, gathered in list
-/// order (ForcesBlock::add), then computed pair by pair with no dependence
-/// between pairs (ForcesBlock::compute: a loop the compiler vectorises, two or
-/// four divisions and square roots at a time) and summed in list order
-/// (ForcesBlock::sum). Each term is the same expression as in one loop over
-/// the list, and the sums keep its order: the same bits.
+/// order, then computed pair by pair with no dependence between pairs
+/// (gas_forces_compute: a loop the compiler vectorises, two or four divisions
+/// and square roots at a time) and summed in list order (gas_forces_sum).
+/// Each term is the same expression as in one loop over the list, and the
+/// sums keep its order: the same bits.
 struct ForcesBlock {
-  static constexpr int size = 32;
+  static constexpr int size = 32, dims = wash::ParticleVec::dimension;
   // gathered: the particle's own values and, per pair, the neighbour's
   double hi, rhoi, Pi, ci, ui, fi, normi, Pi_rho2;
-  wash::ParticleVec d[size], dv[size];
-  double d2[size], hj[size], m[size], Pj[size], cj[size], uj[size], normj[size], Pj_rho2[size],
-      rhoj[size], vr[size], fj[size];
+  VectorBlock<size, dims> d, dv;
+  double hj[size], m[size], Pj[size], cj[size], uj[size], normj[size], Pj_rho2[size], rhoj[size],
+      fj[size];
   // computed
-  double g[size], mf[size], ef[size], conduction[size], signal[size];
-  double kept[size]; // 1 or 0: a double, so that the loop vectorises with SSE2
+  VectorBlock<size, dims> acc;
+  double kept[size]; // 1 or 0: a double, so that the loop vectorises
+  double energy[size], conduction[size], signal[size];
   int count = 0;
 };
 
@@ -208,27 +237,28 @@ WASH_SPH_VECTOR_CLONES inline void gas_forces_compute(ForcesBlock &b, const GasS
   const bool gather = s.searchRule == wash::Support::Gather,
              symmetric = s.searchRule == wash::Support::Symmetric;
   for (int k = 0; k < b.count; k++) {
-    const double r = std::sqrt(b.d2[k]), hj = b.hj[k], m = b.m[k], Pj = b.Pj[k], cj = b.cj[k];
+    const wash::ParticleVec d = b.d.get(k), dv = b.dv.get(k);
+    const double r = d.magnitude(), hj = b.hj[k], m = b.m[k], Pj = b.Pj[k], cj = b.cj[k];
     // Both particles of a pair must add the same pair terms, which conserves
     // momentum and energy: the symmetric rule lists i and j in each other's
     // lists (and pairReach cuts both alike); under the gather rule a pair
     // interacts only if each particle is in the other's search sphere.
-    b.kept[k] = r <= 0.0 || (gather && b.d2[k] > (searchSupport * hj) * (searchSupport * hj)) ||
+    b.kept[k] = r <= 0.0 || (gather && d.dot(d) > (searchSupport * hj) * (searchSupport * hj)) ||
                         (symmetric && r > pairReach * std::min(hi, hj))
                     ? 0.0
                     : 1.0;
     const double dWij =
         0.5 * (wendland_c2_dWdr(r, hi, normi) + wendland_c2_dWdr(r, hj, b.normj[k]));
-    b.g[k] = dWij / r; // gradient(d, r, dWij) = d * g
-    const double vr = b.vr[k], rhoij = 0.5 * (rhoi + b.rhoj[k]);
+    const wash::ParticleVec gradW = gradient(d, r, dWij);
+    const double vr = dv.dot(d), rhoij = 0.5 * (rhoi + b.rhoj[k]);
     const double hij = 0.5 * (hi + hj), mu = monaghan_mu(hij, vr, r);
     const double balsara = 0.5 * (fi + b.fj[k]);
     // approaching (vr < 0): viscosity
     const double viscosity =
         vr < 0.0 ? monaghan_viscosity(alpha, beta, ci, cj, mu, rhoij, balsara) : 0.0;
     b.signal[k] = signal_velocity(ci, cj, vr, r);
-    b.mf[k] = m * (Pi_rho2 + b.Pj_rho2[k] + viscosity); // momentum_factor
-    b.ef[k] = m * (Pi_rho2 + 0.5 * viscosity);          // energy_factor
+    b.acc.set(k, gradW * (m * (Pi_rho2 + b.Pj_rho2[k] + viscosity))); // momentum_factor
+    b.energy[k] = m * (Pi_rho2 + 0.5 * viscosity) * dv.dot(gradW);   // energy_factor
     // conduction: u diffuses down its gradient at speed sqrt(|P_i - P_j| / rho)
     b.conduction[k] = price_conductivity(m, alphaConductivity, Pi, Pj, ui, b.uj[k], rhoij, dWij);
   }
@@ -241,10 +271,9 @@ inline void gas_forces_sum(ForcesBlock &b, const GasScheme &s, wash::ParticleVec
   for (int k = 0; k < b.count; k++) {
     if (b.kept[k] == 0.0)
       continue;
-    const wash::ParticleVec gradW = b.d[k] * b.g[k];
     vsig = std::max(vsig, b.signal[k]);
-    acc -= gradW * b.mf[k];
-    energyRate += b.ef[k] * b.dv[k].dot(gradW);
+    acc -= b.acc.get(k);
+    energyRate += b.energy[k];
     energyRate += b.conduction[k];
   }
   b.count = 0;
@@ -274,10 +303,8 @@ inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &nei
   for (const auto &n : neighbours) {
     const int k = b.count;
     const double rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
-    b.d[k] = pos - n.get_pos();
-    b.dv[k] = vel - n.get_vel();
-    b.d2[k] = b.d[k].dot(b.d[k]);
-    b.vr[k] = b.dv[k].dot(b.d[k]);
+    b.d.set(k, pos - n.get_pos());
+    b.dv.set(k, vel - n.get_vel());
     b.hj[k] = n.get_smoothing_length();
     b.m[k] = n.get_mass();
     b.rhoj[k] = rhoj;
