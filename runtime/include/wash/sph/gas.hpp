@@ -77,15 +77,18 @@ inline void gas_smoothing_length(wash::Particle &p, double hFactor, double hMin,
   p.set_smoothing_length(std::min(std::max(h, hMin), hMax));
 }
 
-/// The compilers and processors gas_density_compute and gas_forces_compute
-/// are compiled twice for: for AVX2 (four doubles a vector) and for any
-/// x86-64 (two), the one the processor runs chosen when the program starts.
-/// Separate multiplications and additions either way (no FMA:
-/// -ffp-contract=off), so the same bits.
+/// With g++ on x86-64, gas_density_compute and gas_forces_compute are
+/// compiled twice, for AVX2 (four doubles a vector) and for any x86-64 (two),
+/// and the program runs the one its processor supports (chosen when it
+/// starts). Separate multiplications and additions either way (no FMA:
+/// -ffp-contract=off), so the same bits. Defining WASH_SPH_VECTOR_CLONES
+/// empty compiles them once, for the compiler's target.
+#ifndef WASH_SPH_VECTOR_CLONES
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
 #define WASH_SPH_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define WASH_SPH_VECTOR_CLONES
+#endif
 #endif
 
 /// A block of vectors, one component a row (a column per pair): the layout a
