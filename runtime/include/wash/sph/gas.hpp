@@ -77,8 +77,94 @@ inline void gas_smoothing_length(wash::Particle &p, double hFactor, double hMin,
   p.set_smoothing_length(std::min(std::max(h, hMin), hMax));
 }
 
+/// With g++ on x86-64, gas_density_compute and gas_forces_compute are
+/// compiled twice, for AVX2 (four doubles a vector) and for any x86-64 (two),
+/// and the program runs the one its processor supports (chosen when it
+/// starts). Separate multiplications and additions either way (no FMA:
+/// -ffp-contract=off), so the same bits. Defining WASH_SPH_VECTOR_CLONES
+/// empty compiles them once, for the compiler's target.
+#ifndef WASH_SPH_VECTOR_CLONES
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#define WASH_SPH_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define WASH_SPH_VECTOR_CLONES
+#endif
+#endif
+
+/// A block of vectors, one component a row (a column per pair): the layout a
+/// vectorised loop reads and writes. Left uninitialised, unlike Vec arrays.
+template <int N, int D> struct VectorBlock {
+  double c[D][N];
+  wash::ParticleVec get(int k) const {
+    wash::ParticleVec v;
+    for (int i = 0; i < D; i++)
+      *(v[i]) = c[i][k];
+    return v;
+  }
+  void set(int k, const wash::ParticleVec &v) {
+    for (int i = 0; i < D; i++)
+      c[i][k] = v.at(i);
+  }
+};
+
+/// Component i of a curl: a vector in 3D, a number in 2D.
+inline double curl_component(const wash::Vec<double, 3> &curl, int i) { return curl.at(i); }
+inline double curl_component(double curl, int) { return curl; }
+inline void add_to_curl_component(wash::Vec<double, 3> &curl, int i, double x) { *(curl[i]) += x; }
+inline void add_to_curl_component(double &curl, int, double x) { curl += x; }
+
+/// gas_density's pair terms for a block of neighbours, gathered in list
+/// order, then computed pair by pair with no dependence between pairs
+/// (gas_density_compute: a loop the compiler vectorises, two or four square
+/// roots and divisions at a time) and summed in list order (gas_density_sum).
+/// Each term is the same expression as in one loop over the list, and the
+/// sums keep its order: the same bits.
+struct DensityBlock {
+  static constexpr int size = 32, dims = wash::ParticleVec::dimension;
+  using Curl = decltype(cross(wash::ParticleVec{}, wash::ParticleVec{}));
+  static constexpr int curlDims = dims == 3 ? 3 : 1;
+  double h;
+  VectorBlock<size, dims> d, dv; // gathered
+  double m[size];
+  double kept[size], mW[size], mDiv[size]; // kept: 1 or 0, a double so that the loop vectorises
+  double curl[curlDims][size];
+  int count = 0;
+};
+
+/// DensityBlock's pair terms, b.count of them.
+WASH_SPH_VECTOR_CLONES inline void gas_density_compute(DensityBlock &b) {
+  const double h = b.h;
+  for (int k = 0; k < b.count; k++) {
+    const wash::ParticleVec d = b.d.get(k), dv = b.dv.get(k);
+    const double r = d.magnitude(), m = b.m[k];
+    b.kept[k] = r >= wendland_c2::support * h || r <= 0.0 ? 0.0 : 1.0;
+    b.mW[k] = m * wendland_c2::W(r, h);
+    const wash::ParticleVec gradW = gradient(d, r, wendland_c2::dWdr(r, h));
+    b.mDiv[k] = m * dv.dot(gradW);
+    const DensityBlock::Curl curl = cross(dv, gradW) * m;
+    for (int i = 0; i < DensityBlock::curlDims; i++)
+      b.curl[i][k] = curl_component(curl, i);
+  }
+}
+
+/// Adds DensityBlock's pair terms to the sums, in list order; empties it.
+inline void gas_density_sum(DensityBlock &b, double &rho, double &div, DensityBlock::Curl &curl) {
+  gas_density_compute(b);
+  for (int k = 0; k < b.count; k++) {
+    if (b.kept[k] == 0.0)
+      continue;
+    rho += b.mW[k];
+    div -= b.mDiv[k];
+    for (int i = 0; i < DensityBlock::curlDims; i++)
+      add_to_curl_component(curl, i, b.curl[i][k]);
+  }
+  b.count = 0;
+}
+
 /// Summation density (the particle's own weight scaled by 1 - selfCorrection),
-/// pressure, and the Balsara (1995) switch from the velocity divergence and curl.
+/// pressure, and the Balsara (1995) switch from the velocity divergence and
+/// curl. The pair terms are computed a block of neighbours at a time
+/// (DensityBlock).
 inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
                         const GasScheme &s, double selfCorrection) {
   const double h = p.get_smoothing_length();
@@ -86,17 +172,17 @@ inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &ne
   double rho = (1.0 - selfCorrection) * p.get_mass() * wendland_c2::W(0.0, h);
   double div = 0.0;
   decltype(cross(vel, vel)) curl{};
+  DensityBlock b;
+  b.h = h;
   for (const auto &n : neighbours) {
-    wash::ParticleVec d = pos - n.get_pos();
-    double r = d.magnitude();
-    if (r >= wendland_c2::support * h || r <= 0.0)
-      continue;
-    rho += n.get_mass() * wendland_c2::W(r, h);
-    wash::ParticleVec gradW = gradient(d, r, wendland_c2::dWdr(r, h));
-    wash::ParticleVec dv = vel - n.get_vel();
-    div -= n.get_mass() * dv.dot(gradW);
-    curl += cross(dv, gradW) * n.get_mass();
+    const int k = b.count;
+    b.d.set(k, pos - n.get_pos());
+    b.dv.set(k, vel - n.get_vel());
+    b.m[k] = n.get_mass();
+    if (++b.count == DensityBlock::size)
+      gas_density_sum(b, rho, div, curl);
   }
+  gas_density_sum(b, rho, div, curl);
   const double energy = p.get_force_scalar("energy");
   const double pressure = ideal_gas_pressure(s.gamma, rho, energy);
   div /= rho;
@@ -107,46 +193,134 @@ inline void gas_density(wash::Particle &p, const std::vector<wash::Particle> &ne
                                                ideal_gas_sound_speed(s.gamma, pressure, rho), h));
 }
 
-/// Pressure and viscous accelerations, du/dt (with conduction), and the
-/// particle's Courant time step.
-inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
-                       const GasScheme &s) {
-  const wash::ParticleVec pos = p.get_pos(), vel = p.get_vel();
-  const double hi = p.get_smoothing_length(), rhoi = p.get_density();
-  const double Pi = p.get_force_scalar("pressure"), ci = ideal_gas_sound_speed(s.gamma, Pi, rhoi);
-  const double ui = ideal_gas_energy(s.gamma, Pi, rhoi), fi = p.get_force_scalar("balsara");
-  wash::ParticleVec acc{};
-  double energyRate = 0.0, vsig = ci;
-  for (const auto &n : neighbours) {
-    wash::ParticleVec d = pos - n.get_pos();
-    const double r = d.magnitude(), hj = n.get_smoothing_length();
+/// wendland_c2::dWdr's factor of h alone, -105 / (16 pi h^4) in 3D: a
+/// function of one particle's h, which the translator computes once per
+/// neighbour rather than once per pair (non-template, so that it can).
+inline double wendland_c2_gradient_norm(double h) {
+  return wash::dimensions == 2 ? -35.0 / (4.0 * PI * h * h * h)
+                               : -105.0 / (16.0 * PI * h * h * h * h);
+}
+
+/// wendland_c2::dWdr(r, h) bit for bit, given norm =
+/// wendland_c2_gradient_norm(h): the same operations in the same order.
+inline double wendland_c2_dWdr(double r, double h, double norm) {
+  double q = r / h;
+  if (q >= 2.0)
+    return 0.0;
+  double s = 1.0 - 0.5 * q;
+  return norm * q * s * s * s;
+}
+
+/// The pair terms of gas_forces for a block of neighbours, gathered in list
+/// order, then computed pair by pair with no dependence between pairs
+/// (gas_forces_compute: a loop the compiler vectorises, two or four divisions
+/// and square roots at a time) and summed in list order (gas_forces_sum).
+/// Each term is the same expression as in one loop over the list, and the
+/// sums keep its order: the same bits.
+struct ForcesBlock {
+  static constexpr int size = 32, dims = wash::ParticleVec::dimension;
+  // gathered: the particle's own values and, per pair, the neighbour's
+  double hi, rhoi, Pi, ci, ui, fi, normi, Pi_rho2;
+  VectorBlock<size, dims> d, dv;
+  double hj[size], m[size], Pj[size], cj[size], uj[size], normj[size], Pj_rho2[size], rhoj[size],
+      fj[size];
+  // computed
+  VectorBlock<size, dims> acc;
+  double kept[size]; // 1 or 0: a double, so that the loop vectorises
+  double energy[size], conduction[size], signal[size];
+  int count = 0;
+};
+
+/// ForcesBlock's pair terms, b.count of them.
+WASH_SPH_VECTOR_CLONES inline void gas_forces_compute(ForcesBlock &b, const GasScheme &s) {
+  const double hi = b.hi, rhoi = b.rhoi, Pi = b.Pi, ci = b.ci, ui = b.ui, fi = b.fi;
+  const double normi = b.normi, Pi_rho2 = b.Pi_rho2;
+  const double alpha = s.alpha, beta = s.beta, alphaConductivity = s.alphaConductivity;
+  const double searchSupport = s.searchSupport, pairReach = s.pairReach;
+  const bool gather = s.searchRule == wash::Support::Gather,
+             symmetric = s.searchRule == wash::Support::Symmetric;
+  for (int k = 0; k < b.count; k++) {
+    const wash::ParticleVec d = b.d.get(k), dv = b.dv.get(k);
+    const double r = d.magnitude(), hj = b.hj[k], m = b.m[k], Pj = b.Pj[k], cj = b.cj[k];
     // Both particles of a pair must add the same pair terms, which conserves
     // momentum and energy: the symmetric rule lists i and j in each other's
     // lists (and pairReach cuts both alike); under the gather rule a pair
     // interacts only if each particle is in the other's search sphere.
-    if (r <= 0.0 || (s.searchRule == wash::Support::Gather &&
-                     d.dot(d) > (s.searchSupport * hj) * (s.searchSupport * hj)))
-      continue;
-    if (s.searchRule == wash::Support::Symmetric && r > s.pairReach * std::min(hi, hj))
-      continue;
-    const double m = n.get_mass(), rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
-    const double cj = ideal_gas_sound_speed(s.gamma, Pj, rhoj);
-    const double uj = ideal_gas_energy(s.gamma, Pj, rhoj);
-    const double dWij = 0.5 * (wendland_c2::dWdr(r, hi) + wendland_c2::dWdr(r, hj));
-    const wash::ParticleVec gradW = gradient(d, r, dWij), dv = vel - n.get_vel();
-    const double vr = dv.dot(d), rhoij = 0.5 * (rhoi + rhoj);
-    double viscosity = 0.0;
-    if (vr < 0.0) { // approaching
-      double hij = 0.5 * (hi + hj), mu = monaghan_mu(hij, vr, r);
-      double balsara = 0.5 * (fi + n.get_force_scalar("balsara"));
-      viscosity = monaghan_viscosity(s.alpha, s.beta, ci, cj, mu, rhoij, balsara);
-    }
-    vsig = std::max(vsig, signal_velocity(ci, cj, vr, r));
-    acc -= gradW * momentum_factor(m, Pi, rhoi, Pj, rhoj, viscosity);
-    energyRate += energy_factor(m, Pi, rhoi, viscosity) * dv.dot(gradW);
+    b.kept[k] = r <= 0.0 || (gather && d.dot(d) > (searchSupport * hj) * (searchSupport * hj)) ||
+                        (symmetric && r > pairReach * std::min(hi, hj))
+                    ? 0.0
+                    : 1.0;
+    const double dWij =
+        0.5 * (wendland_c2_dWdr(r, hi, normi) + wendland_c2_dWdr(r, hj, b.normj[k]));
+    const wash::ParticleVec gradW = gradient(d, r, dWij);
+    const double vr = dv.dot(d), rhoij = 0.5 * (rhoi + b.rhoj[k]);
+    const double hij = 0.5 * (hi + hj), mu = monaghan_mu(hij, vr, r);
+    const double balsara = 0.5 * (fi + b.fj[k]);
+    // approaching (vr < 0): viscosity
+    const double viscosity =
+        vr < 0.0 ? monaghan_viscosity(alpha, beta, ci, cj, mu, rhoij, balsara) : 0.0;
+    b.signal[k] = signal_velocity(ci, cj, vr, r);
+    b.acc.set(k, gradW * (m * (Pi_rho2 + b.Pj_rho2[k] + viscosity))); // momentum_factor
+    b.energy[k] = m * (Pi_rho2 + 0.5 * viscosity) * dv.dot(gradW);   // energy_factor
     // conduction: u diffuses down its gradient at speed sqrt(|P_i - P_j| / rho)
-    energyRate += price_conductivity(m, s.alphaConductivity, Pi, Pj, ui, uj, rhoij, dWij);
+    b.conduction[k] = price_conductivity(m, alphaConductivity, Pi, Pj, ui, b.uj[k], rhoij, dWij);
   }
+}
+
+/// Adds ForcesBlock's pair terms to the sums, in list order; empties it.
+inline void gas_forces_sum(ForcesBlock &b, const GasScheme &s, wash::ParticleVec &acc,
+                           double &energyRate, double &vsig) {
+  gas_forces_compute(b, s);
+  for (int k = 0; k < b.count; k++) {
+    if (b.kept[k] == 0.0)
+      continue;
+    vsig = std::max(vsig, b.signal[k]);
+    acc -= b.acc.get(k);
+    energyRate += b.energy[k];
+    energyRate += b.conduction[k];
+  }
+  b.count = 0;
+}
+
+/// Pressure and viscous accelerations, du/dt (with conduction), and the
+/// particle's Courant time step. The neighbour's terms of one particle alone
+/// (its kernel-gradient norm, P_j / rho_j^2, sound speed, energy) are written
+/// apart so that the translator hoists them out of the pair loop; the pair
+/// terms are computed a block of neighbours at a time (ForcesBlock).
+inline void gas_forces(wash::Particle &p, const std::vector<wash::Particle> &neighbours,
+                       const GasScheme &s) {
+  const wash::ParticleVec pos = p.get_pos(), vel = p.get_vel();
+  ForcesBlock b;
+  const double hi = p.get_smoothing_length(), rhoi = p.get_density();
+  const double Pi = p.get_force_scalar("pressure"), ci = ideal_gas_sound_speed(s.gamma, Pi, rhoi);
+  b.hi = hi;
+  b.rhoi = rhoi;
+  b.Pi = Pi;
+  b.ci = ci;
+  b.ui = ideal_gas_energy(s.gamma, Pi, rhoi);
+  b.fi = p.get_force_scalar("balsara");
+  b.normi = wendland_c2_gradient_norm(hi);
+  b.Pi_rho2 = Pi / (rhoi * rhoi);
+  wash::ParticleVec acc{};
+  double energyRate = 0.0, vsig = ci;
+  for (const auto &n : neighbours) {
+    const int k = b.count;
+    const double rhoj = n.get_density(), Pj = n.get_force_scalar("pressure");
+    b.d.set(k, pos - n.get_pos());
+    b.dv.set(k, vel - n.get_vel());
+    b.hj[k] = n.get_smoothing_length();
+    b.m[k] = n.get_mass();
+    b.rhoj[k] = rhoj;
+    b.Pj[k] = Pj;
+    b.cj[k] = ideal_gas_sound_speed(s.gamma, Pj, rhoj);
+    b.uj[k] = ideal_gas_energy(s.gamma, Pj, rhoj);
+    b.normj[k] = wendland_c2_gradient_norm(n.get_smoothing_length());
+    b.Pj_rho2[k] = Pj / (rhoj * rhoj);
+    b.fj[k] = n.get_force_scalar("balsara");
+    if (++b.count == ForcesBlock::size)
+      gas_forces_sum(b, s, acc, energyRate, vsig);
+  }
+  gas_forces_sum(b, s, acc, energyRate, vsig);
   p.set_acc(acc);
   p.set_force_scalar("energy_rate", energyRate);
   p.set_force_scalar("time_step", courant_time_step(s.courant, hi, vsig));
