@@ -115,6 +115,51 @@ TEST(BackendTypes, TheSharedMemorySortLeavesRewrittenColumnsInTheOldOrder) {
   EXPECT_EQ(P.mass, (std::vector<double>{0, 1, 2, 3})); // not moved
 }
 
+// 40 particles one apart across a box periodic in x, [0, 40): the last
+// (x = 39.5) has a support radius of 10, every other one 0.5, so the only
+// pairs across the face are the last with the first ten. Images reach as far
+// as pairs do: those ten have images by the high face, and the particles
+// near the high face that pair with nothing across it have none (they had,
+// when images reached the largest radius on every face).
+template <typename Backend> void imagesOfPairs(bool symmetric) {
+  Backend backend;
+  wash::backend::MinimalParticles<2> P;
+  for (std::uint64_t k = 0; k < 40; ++k) {
+    P.id.push_back(k);
+    P.pos.push_back(wash::Vec<double, 2>{double(k) + 0.5, 0.5});
+  }
+  backend.distribute(P, [] { return 1.0; });
+  wash::detail::Box box;
+  ASSERT_TRUE(wash::detail::setBox(box, 2, {0.0, 0.0}, {40.0, 1.0}, {true, false}));
+  wash::backend::SearchGeometry at;
+  at.reach = 10.0;
+  at.cellSize = 2.5;
+  at.support = 1.0; // radius = h
+  at.symmetric = symmetric;
+  auto radius = [](std::uint64_t id) { return id == 39 ? 10.0 : 0.5; };
+  backend.search(P, at, box, wash::backend::NoColumns{},
+                 [&P, &radius](Index row) { return radius(P.id[row]); });
+  std::vector<int> rows(40, 0);
+  for (Index k = 0; k < P.size(); ++k)
+    ++rows[P.id[k]];
+  for (std::uint64_t j = 0; j < 10; ++j)
+    EXPECT_EQ(rows[j], 2) << "particle " << j << " pairs with 39 across the face";
+  for (std::uint64_t j = 10; j < 39; ++j)
+    EXPECT_EQ(rows[j], 1) << "particle " << j << " pairs with nothing across the face";
+  if (symmetric)
+    EXPECT_EQ(rows[39], 2) << "39's own radius reaches across the face";
+}
+
+TEST(BackendTypes, ImagesReachAsFarAsPairsUnderTheSymmetricRule) {
+  imagesOfPairs<wash::serial::Backend<2>>(true);
+  imagesOfPairs<wash::openmp::Backend<2>>(true);
+}
+
+TEST(BackendTypes, ImagesReachAsFarAsPairsUnderTheGatherRule) {
+  imagesOfPairs<wash::serial::Backend<2>>(false);
+  imagesOfPairs<wash::openmp::Backend<2>>(false);
+}
+
 TEST(BackendTypes, NamesAreTheBackendsDefNames) {
   EXPECT_EQ(std::string(wash::serial::Backend<2>::name), "serial");
   EXPECT_EQ(std::string(wash::openmp::Backend<2>::name), "openmp");

@@ -10,9 +10,11 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/backend/search_geometry.hpp>
 #include <wash/detail/box.hpp>
 #include <wash/vec.hpp>
 
+#include <algorithm>
 #include <array>
 #include <numeric>
 #include <vector>
@@ -59,24 +61,45 @@ struct Images {
   }
 };
 
-/// Appends an image of every particle among `from` (positions) that lies within
-/// reach (1.01 r, a safe superset) of a periodic face, once per combination of
-/// faces it is near, and records them.
-template <int D, typename Particles>
-void addImages(Particles &P, const std::vector<Index> &from, const detail::Box &box, double r,
-               Images &images) {
+/// Appends an image of every particle among `from` (positions) that can pair
+/// with a particle across a periodic face, once per combination of faces it
+/// is near, and records them. Its image across the low face of axis a lands
+/// by the high face, where it pairs with a particle i only if it lies within
+/// i's search radius (at most the largest by that face) or, under the
+/// symmetric rule, within its own: 1.01 times the larger, a safe superset.
+/// Under the influence-radius rule both are the radius. `combineMax`, if
+/// given, takes the largest radius by a face over all processes.
+template <int D, typename Particles, typename SmoothingLength>
+void addImages(Particles &P, const std::vector<Index> &from, const detail::Box &box,
+               const RowReach<SmoothingLength> &reachOf, Images &images,
+               double (*combineMax)(double) = nullptr) {
   if (!box.anyPeriodic())
     return;
-  const double reach = 1.01 * r;
+  const double reach = 1.01 * reachOf.at.reach;
+  // byFace[a][0]: the largest search radius by the low face of axis a; [1] the high.
+  std::array<std::array<double, 2>, D> byFace{};
+  for (Index i : from)
+    for (int a = 0; a < D; ++a) {
+      const double x = double(P.pos[i].at(a));
+      if (box.periodic[a] && x - box.lo[a] <= reach)
+        byFace[a][0] = std::max(byFace[a][0], reachOf.search(i));
+      if (box.periodic[a] && box.hi[a] - x <= reach)
+        byFace[a][1] = std::max(byFace[a][1], reachOf.search(i));
+    }
+  for (int a = 0; a < D; ++a)
+    for (double &largest : byFace[a])
+      largest = combineMax ? combineMax(largest) : largest;
   for (Index i : from) {
     std::array<std::array<int, 2>, D> options; // per axis: shifts to try (0 first)
     std::array<int, D> count{};
+    const double own = reachOf.sender(i);
     for (int a = 0; a < D; ++a) {
       options[a][count[a]++] = 0;
       const double x = double(P.pos[i].at(a));
-      if (box.periodic[a] && x - box.lo[a] <= reach)
+      if (box.periodic[a] && x - box.lo[a] <= std::min(reach, 1.01 * std::max(own, byFace[a][1])))
         options[a][count[a]++] = 1;
-      else if (box.periodic[a] && box.hi[a] - x <= reach)
+      else if (box.periodic[a] &&
+               box.hi[a] - x <= std::min(reach, 1.01 * std::max(own, byFace[a][0])))
         options[a][count[a]++] = -1;
     }
     std::array<int, D> pick{};

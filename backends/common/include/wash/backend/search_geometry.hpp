@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace wash::backend {
@@ -41,6 +42,32 @@ inline SearchGeometry fixedGeometry(double radius) { return {radius, radius, 0.0
 /// What a generated search passes for the smoothing lengths under the
 /// influence-radius rule, which reads none (otherwise a callable h(row)).
 struct NoSmoothingLength {};
+
+/// The radii of row q under the search rule, given its smoothing length
+/// (`h(q)`, when the rule reads one): what lets periodic images and MPI
+/// halos reach only as far as each particle's pairs do.
+template <typename SmoothingLength> struct RowReach {
+  const SearchGeometry &at;
+  SmoothingLength h;
+
+  static constexpr bool fixed = std::is_same_v<SmoothingLength, NoSmoothingLength>;
+
+  /// How far q's own search reaches.
+  double search(Index q) const {
+    if constexpr (fixed)
+      return at.reach;
+    else
+      return at.radiusOf(double(h(q)));
+  }
+  /// How far another particle's search must reach to pair with q whatever
+  /// its own radius: q's radius where a pair takes the larger one, else 0.
+  double sender(Index q) const {
+    if constexpr (fixed)
+      return at.reach;
+    else
+      return at.symmetric ? at.radiusOf(double(h(q))) : 0.0;
+  }
+};
 
 /// The geometry for the smoothing-length rule over the particles at `rows`.
 /// `globalMax`, if given, combines a rank's largest radius with the other ranks'.

@@ -48,13 +48,13 @@ public:
   /// (docs/semantics.md). Images are copies of every column, so the visited
   /// columns need no transfer. Columns the generated program marks as
   /// rewritten before they are read (forEachReorderedColumn) keep their order.
-  /// (The smoothing lengths, which a distributed backend's halo reads, are
-  /// not needed: images reach as far as the largest radius.)
+  /// `h(row)`, where the rule reads smoothing lengths, lets images reach
+  /// only as far as each particle's pairs do.
   template <typename Particles, typename Fields, typename SmoothingLength = NoSmoothingLength>
   void search(Particles &P, const SearchGeometry &at, const detail::Box &box, Fields,
-              SmoothingLength = {}) {
+              SmoothingLength h = {}) {
     dropImages(P, images_);
-    addImages<D>(P, images_.owned, box, at.reach, images_);
+    addImages<D>(P, images_.owned, box, RowReach<SmoothingLength>{at, h}, images_);
     grid_.sort(P.pos, P.id, at.cellSize, order_);
     auto reorder = [this](auto &column) { permute(column, order_); };
     if constexpr (requires { P.forEachReorderedColumn(reorder); })

@@ -51,15 +51,16 @@ public:
   /// Particles to their owners, images across periodic faces, a new halo
   /// carrying the columns `fields` visits (id and pos among them), then
   /// everything local sorted by (cell, id). Migration moves every column.
-  /// `h(row)`, where the rule reads smoothing lengths, lets the halo reach
-  /// only as far as each particle's pairs do (pair_reach.hpp).
+  /// `h(row)`, where the rule reads smoothing lengths, lets images and the
+  /// halo reach only as far as each particle's pairs do (pair_reach.hpp).
   template <typename Particles, typename Fields,
             typename SmoothingLength = backend::NoSmoothingLength>
   void search(Particles &P, const backend::SearchGeometry &at, const ::wash::detail::Box &box,
               Fields fields, SmoothingLength h = {}) {
     redistribute(P, domain_, halo_);
-    backend::addImages<D>(P, halo_.owned, box, at.reach, halo_);
-    buildHalo(P, domain_, RowReach<SmoothingLength>{at, h}, box, halo_, fields);
+    const RowReach<SmoothingLength> reachOf{at, h};
+    backend::addImages<D>(P, halo_.owned, box, reachOf, halo_, &combineMax);
+    buildHalo(P, domain_, reachOf, box, halo_, fields);
     grid_.sort(P.pos, P.id, at.cellSize, order_);
     P.forEachColumn([this](auto &column) { backend::permute(column, order_); });
     halo_.permuted(order_);

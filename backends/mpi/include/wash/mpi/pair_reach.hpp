@@ -23,36 +23,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
 namespace wash::mpi {
 
-/// The radii of row q under the search rule, given its smoothing length
-/// (`h(q)`, when the rule reads one).
-template <typename SmoothingLength> struct RowReach {
-  const backend::SearchGeometry &at;
-  SmoothingLength h;
-
-  static constexpr bool fixed = std::is_same_v<SmoothingLength, backend::NoSmoothingLength>;
-
-  /// How far q's own search reaches.
-  double search(backend::Index q) const {
-    if constexpr (fixed)
-      return at.reach;
-    else
-      return at.radiusOf(double(h(q)));
-  }
-  /// How far another rank's search must reach to pair with q whatever its
-  /// own radius: q's radius where a pair takes the larger one, else 0.
-  double sender(backend::Index q) const {
-    if constexpr (fixed)
-      return at.reach;
-    else
-      return at.symmetric ? at.radiusOf(double(h(q))) : 0.0;
-  }
-};
+using backend::RowReach;
 
 /// Whether p lies within `radius` of the box of `cell` (cells of side
 /// `cellSize` anchored at 0), erring on the side of yes by far more than the
