@@ -95,12 +95,14 @@ expect_exit 0 "$c" --steps $((k + 5)) --quiet --out term --dump term.csv --resta
 cmp -s straight.csv term.csv || fail "the restart after SIGTERM at iteration $k differs from the straight run"
 
 # A second signal ends the run at once, by the signal, with no checkpoint:
-# sent during a long step (sedov, 27000 particles). Should the step end between
-# the two signals (the run then exits 75), try again: three times at most.
+# sent during a long step (sedov, 125 000 particles: about 0.35 s a step, so
+# that the 20 ms between the signals rarely see one end). Should the step end
+# between the two signals (the run then exits 75), try again: three times at
+# most.
 got=0
 for _ in 1 2 3; do
   rm -rf term2
-  "$bin/sedov-serial" --steps 1000 --out term2 -- 30 >term.txt 2>&1 &
+  "$bin/sedov-serial" --steps 1000 --out term2 -- 50 >term.txt 2>&1 &
   pid=$!
   for _ in $(seq 300); do grep -q "^wash serial:" term.txt && break; sleep 0.1; done
   sleep 1
