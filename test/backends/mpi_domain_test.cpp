@@ -104,26 +104,36 @@ TEST(MpiDomain, CrowdedCellsWeighMoreThanLoneParticles) {
     EXPECT_LT(keptOwn(domain, cells), 450u);
 }
 
-// Pieces are boxes, cut across their longest side: four ranks on a square of
-// cells get its quadrants, each a box about half the square's side.
-TEST(MpiDomain, BisectionCutsSquarePieces) {
-  if (ranks() != 4)
-    GTEST_SKIP() << "needs 4 ranks";
+// Pieces are boxes of cells with a share of them each, at any rank count;
+// four ranks on a square get its quadrants, each a box half the square's
+// side.
+TEST(MpiDomain, BisectionCutsBoxes) {
   Domain<2> domain;
-  std::vector<Cell> cells; // rank r: rows [16 r, 16 r + 16) of a 64 x 64 square
-  for (std::int64_t y = 16 * rank(); y < 16 * rank() + 16; ++y)
-    for (std::int64_t x = 0; x < 64; ++x)
+  // Rank r: an equal band of the rows of a 64 x 64 square, one particle a cell.
+  const std::int64_t side = 64, n = ranks();
+  std::vector<Cell> cells;
+  for (std::int64_t y = side * rank() / n; y < side * (rank() + 1) / n; ++y)
+    for (std::int64_t x = 0; x < side; ++x)
       cells.push_back({x, y});
   domain.balance(cells, 1.0);
-  std::vector<std::int64_t> lo(8, 1 << 20), hi(8, -(1 << 20)); // x and y per owner
-  for (std::int64_t y = 0; y < 64; ++y)
-    for (std::int64_t x = 0; x < 64; ++x) {
+  std::vector<std::int64_t> count(n, 0), lo(2 * n, side), hi(2 * n, -1); // x and y per owner
+  for (std::int64_t y = 0; y < side; ++y)
+    for (std::int64_t x = 0; x < side; ++x) {
       const int r = domain.ownerOf({x, y});
+      ++count[r];
       lo[2 * r] = std::min(lo[2 * r], x), hi[2 * r] = std::max(hi[2 * r], x);
       lo[2 * r + 1] = std::min(lo[2 * r + 1], y), hi[2 * r + 1] = std::max(hi[2 * r + 1], y);
     }
-  for (int k = 0; k < 8; ++k)
-    EXPECT_NEAR(double(hi[k] - lo[k] + 1), 32.0, 2.0) << "owner " << k / 2 << " axis " << k % 2;
+  for (int r = 0; r < n; ++r) {
+    const std::int64_t width = hi[2 * r] - lo[2 * r] + 1, height = hi[2 * r + 1] - lo[2 * r + 1] + 1;
+    EXPECT_EQ(width * height, count[r]) << "owner " << r << "'s cells are not a box";
+    EXPECT_NEAR(double(count[r]), double(side * side) / double(n), 0.05 * side * side / n)
+        << "owner " << r;
+    if (n == 4) {
+      EXPECT_NEAR(double(width), 32.0, 2.0) << "owner " << r;
+      EXPECT_NEAR(double(height), 32.0, 2.0) << "owner " << r;
+    }
+  }
 }
 
 // The domain's cells are the canonical ones (wash/detail/cell.hpp): 0.3 / 0.1

@@ -61,6 +61,23 @@ struct Images {
   }
 };
 
+/// Calls visit(k) for every combination k of the shifts `shift` allows, a
+/// shift per axis, 0 or shift[a], other than all zero: the images of a
+/// point near the faces where shift[a] is +1 (near the low face: its image
+/// lies past the high one) or -1. The lowest axis varies fastest.
+template <int D, typename Visit> void forEachImageShift(const std::array<int, D> &shift, Visit visit) {
+  std::array<int, D> k{};
+  while (true) {
+    int a = 0;
+    while (a < D && (k[a] != 0 || shift[a] == 0))
+      k[a] = 0, ++a;
+    if (a == D)
+      return;
+    k[a] = shift[a];
+    visit(k);
+  }
+}
+
 /// Appends an image of every particle among `from` (positions) that can pair
 /// with a particle across a periodic face, once per combination of faces it
 /// is near, and records them. Its image across the low face of axis a lands
@@ -90,37 +107,29 @@ void addImages(Particles &P, const std::vector<Index> &from, const detail::Box &
     for (double &largest : byFace[a])
       largest = combineMax ? combineMax(largest) : largest;
   for (Index i : from) {
-    std::array<std::array<int, 2>, D> options; // per axis: shifts to try (0 first)
-    std::array<int, D> count{};
+    std::array<int, D> shift{}; // per axis: the image's shift, 0 for none
     const double own = reachOf.sender(i);
     for (int a = 0; a < D; ++a) {
-      options[a][count[a]++] = 0;
       const double x = double(P.pos[i].at(a));
       if (box.periodic[a] && x - box.lo[a] <= std::min(reach, 1.01 * std::max(own, byFace[a][1])))
-        options[a][count[a]++] = 1;
+        shift[a] = 1;
       else if (box.periodic[a] &&
                box.hi[a] - x <= std::min(reach, 1.01 * std::max(own, byFace[a][0])))
-        options[a][count[a]++] = -1;
+        shift[a] = -1;
     }
-    std::array<int, D> pick{};
-    while (true) {
-      int a = 0;
-      while (a < D && pick[a] == count[a] - 1)
-        pick[a] = 0, ++a;
-      if (a == D)
-        break;
-      ++pick[a]; // the next combination; the all-zero one (the particle itself) is skipped
+    forEachImageShift<D>(shift, [&](const std::array<int, D> &k) {
       const Index copy = Index(P.size());
       P.forEachColumn([&](auto &column) {
         auto value = column[i];
         column.push_back(value);
       });
       for (int b = 0; b < D; ++b)
-        if (int k = options[b][pick[b]])
-          *P.pos[copy][b] = decltype(P.pos[copy].at(b))(box.shifted(double(P.pos[i].at(b)), k, b));
+        if (k[b])
+          *P.pos[copy][b] =
+              decltype(P.pos[copy].at(b))(box.shifted(double(P.pos[i].at(b)), k[b], b));
       images.source.push_back(i);
       images.image.push_back(copy);
-    }
+    });
   }
 }
 

@@ -27,6 +27,21 @@
 
 namespace wash::mpi {
 
+/// Calls visit(cell) for every cell of the box [first, last], x fastest, while
+/// it returns true.
+template <typename Cell, typename Visit>
+void forEachCellIn(const Cell &first, const Cell &last, Visit visit) {
+  Cell c = first;
+  while (visit(c)) {
+    std::size_t a = 0;
+    while (a < c.size() && c[a] == last[a])
+      c[a] = first[a], ++a;
+    if (a == c.size())
+      return;
+    ++c[a];
+  }
+}
+
 template <int D> class Domain {
 public:
   using Cell = std::array<std::int64_t, D>;
@@ -64,11 +79,6 @@ public:
       key |= spread(std::uint64_t(u)) << a;
     }
     return key;
-  }
-
-  /// The key of the cell a position lies in.
-  template <typename PosT> std::uint64_t keyAt(const PosT &p) const {
-    return keyOf(cellOf(Vec<double, D>(p)));
   }
 
   /// The rank that owns a cell: the leaf of the bisection tree it falls in.

@@ -23,7 +23,6 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
-#include <unordered_map>
 #include <vector>
 
 namespace wash::mpi {
@@ -70,21 +69,6 @@ const char *unpack(backend::Column<T> &c, const std::vector<Index> &at, const ch
   for (std::size_t k = 0; k < at.size(); ++k)
     std::memcpy(&c[at[k]], in + k * sizeof(T), sizeof(T));
   return in + at.size() * sizeof(T);
-}
-
-/// Calls visit(cell) for every cell of the box [first, last], x fastest, while
-/// it returns true.
-template <typename Cell, typename Visit>
-void forEachCellIn(const Cell &first, const Cell &last, Visit visit) {
-  Cell c = first;
-  while (visit(c)) {
-    std::size_t a = 0;
-    while (a < c.size() && c[a] == last[a])
-      c[a] = first[a], ++a;
-    if (a == c.size())
-      return;
-    ++c[a];
-  }
 }
 
 /// Sends the columns `fields` visits, at send[r], to each rank r, and writes
@@ -265,71 +249,15 @@ void buildHalo(Particles &P, const Domain<D> &domain, const RowReach<SmoothingLe
       last[a] = std::min(hi[a], own[a] + reach);
     }
     known = 1;
-    detail::forEachCellIn(first, last, [&](const Cell &x) {
+    forEachCellIn(first, last, [&](const Cell &x) {
       known = ownerOf(x) == me;
       return known == 1;
     });
     return known == 1;
   };
-  // The largest search radius of this rank's cells near another rank's, to
-  // those ranks; theirs, from them. Near a periodic face, the ranks across it
-  // hold images near the cell (addImages): a cell there is walked around its
-  // image too.
-  auto faceShift = [&](const Cell &cell, int a) {
-    const double margin = double(reach + 1) * cellSize;
-    if (!box.periodic[a])
-      return 0;
-    if (double(cell[a] + 1) * cellSize - box.lo[a] <= margin)
-      return 1;
-    return box.hi[a] - double(cell[a]) * cellSize <= margin ? -1 : 0;
-  };
-  auto nearFace = [&](const Cell &cell) {
-    for (int a = 0; a < D; ++a)
-      if (faceShift(cell, a))
-        return true;
-    return false;
-  };
-  using Largest = typename CellReach<D>::Largest;
-  std::unordered_map<std::uint64_t, Largest> mine;
-  for (Index i : plan.owned) {
-    const Cell cell = domain.cellOf(Vec<double, D>(P.pos[i]));
-    if (dense && interior(cell) && !nearFace(cell))
-      continue;
-    Largest &largest = mine.try_emplace(domain.keyOf(cell), Largest{cell, 0.0}).first->second;
-    largest.radius = std::max(largest.radius, reachOf.search(i));
-  }
-  CellReach<D> theirs;
-  theirs.exchange(mine, [&](const Cell &cell, std::vector<int> &near) {
-    auto walkAround = [&](const Cell &centre, std::int64_t width) {
-      Cell first, last;
-      for (int a = 0; a < D; ++a)
-        first[a] = centre[a] - width, last[a] = centre[a] + width;
-      detail::forEachCellIn(first, last, [&](const Cell &x) {
-        const int owner = ownerOf(x);
-        if (owner != me && std::find(near.begin(), near.end(), owner) == near.end())
-          near.push_back(owner);
-        return true;
-      });
-    };
-    walkAround(cell, reach);
-    std::array<int, D> shift{}, pick{};
-    for (int a = 0; a < D; ++a)
-      shift[a] = faceShift(cell, a);
-    while (true) { // every nonzero combination of the faces the cell is near
-      int a = 0;
-      while (a < D && (pick[a] == 1 || shift[a] == 0))
-        pick[a] = 0, ++a;
-      if (a == D)
-        break;
-      pick[a] = 1;
-      Cell image = cell;
-      for (int b = 0; b < D; ++b)
-        if (pick[b])
-          image[b] = wash::detail::cellCoordinate(
-              box.shifted((double(cell[b]) + 0.5) * cellSize, shift[b], b), cellSize);
-      walkAround(image, reach + 1); // + 1: the image of a cell straddles two
-    }
-  });
+  const CellReach<D> theirs = exchangeBoundaryReach(
+      P, plan.owned, domain, reachOf, box, reach, ownerOf,
+      [&](const Cell &cell) { return dense && interior(cell); });
   std::vector<std::vector<Index>> send(n);
   std::vector<int> seen;
   for (Index i = 0; i < owned; ++i) {
@@ -339,7 +267,7 @@ void buildHalo(Particles &P, const Domain<D> &domain, const RowReach<SmoothingLe
     stencil(p, from, to);
     seen.assign(1, me);
     const double own = reachOf.sender(i);
-    detail::forEachCellIn(from, to, [&](const Cell &cell) {
+    forEachCellIn(from, to, [&](const Cell &cell) {
       const int owner = ownerOf(cell);
       if (std::find(seen.begin(), seen.end(), owner) != seen.end())
         return true;

@@ -14,8 +14,12 @@
 #pragma once
 
 #include <wash/backend/columns.hpp>
+#include <wash/backend/periodic.hpp>
 #include <wash/backend/search_geometry.hpp>
 #include <wash/mpi/comm.hpp>
+#include <wash/mpi/domain.hpp>
+#include <wash/detail/box.hpp>
+#include <wash/detail/cell.hpp>
 #include <wash/vec.hpp>
 
 #include <algorithm>
@@ -106,5 +110,69 @@ private:
 
   std::unordered_map<std::uint64_t, double> largest_;
 };
+
+/// Collective: sends the largest search radius of each of this rank's cells
+/// that another rank's particles may pair with (`interior(cell)` false, or
+/// near a periodic face) to the ranks owning cells within `reach` cells of it
+/// (`ownerOf`), or of its image across the faces it is near: those ranks'
+/// images lie there. Returns what the other ranks sent here.
+template <int D, typename Particles, typename SmoothingLength, typename OwnerOf,
+          typename Interior>
+CellReach<D> exchangeBoundaryReach(const Particles &P, const std::vector<backend::Index> &owned,
+                                   const Domain<D> &domain,
+                                   const RowReach<SmoothingLength> &reachOf,
+                                   const ::wash::detail::Box &box, std::int64_t reach,
+                                   OwnerOf ownerOf, Interior interior) {
+  using Cell = typename Domain<D>::Cell;
+  const int me = rank();
+  const double cellSize = domain.cellSize();
+  auto faceShift = [&](const Cell &cell, int a) {
+    const double margin = double(reach + 1) * cellSize;
+    if (!box.periodic[a])
+      return 0;
+    if (double(cell[a] + 1) * cellSize - box.lo[a] <= margin)
+      return 1;
+    return box.hi[a] - double(cell[a]) * cellSize <= margin ? -1 : 0;
+  };
+  auto faceShifts = [&](const Cell &cell) {
+    std::array<int, D> shift;
+    for (int a = 0; a < D; ++a)
+      shift[a] = faceShift(cell, a);
+    return shift;
+  };
+  using Largest = typename CellReach<D>::Largest;
+  std::unordered_map<std::uint64_t, Largest> mine;
+  for (backend::Index i : owned) {
+    const Cell cell = domain.cellOf(Vec<double, D>(P.pos[i]));
+    if (interior(cell) && faceShifts(cell) == std::array<int, D>{})
+      continue;
+    Largest &largest = mine.try_emplace(domain.keyOf(cell), Largest{cell, 0.0}).first->second;
+    largest.radius = std::max(largest.radius, reachOf.search(i));
+  }
+  CellReach<D> theirs;
+  theirs.exchange(mine, [&](const Cell &cell, std::vector<int> &near) {
+    auto walkAround = [&](const Cell &centre, std::int64_t width) {
+      Cell first, last;
+      for (int a = 0; a < D; ++a)
+        first[a] = centre[a] - width, last[a] = centre[a] + width;
+      forEachCellIn(first, last, [&](const Cell &x) {
+        const int owner = ownerOf(x);
+        if (owner != me && std::find(near.begin(), near.end(), owner) == near.end())
+          near.push_back(owner);
+        return true;
+      });
+    };
+    walkAround(cell, reach);
+    backend::forEachImageShift<D>(faceShifts(cell), [&](const std::array<int, D> &k) {
+      Cell image = cell;
+      for (int b = 0; b < D; ++b)
+        if (k[b])
+          image[b] = ::wash::detail::cellCoordinate(
+              box.shifted((double(cell[b]) + 0.5) * cellSize, k[b], b), cellSize);
+      walkAround(image, reach + 1); // + 1: the image of a cell straddles two
+    });
+  });
+  return theirs;
+}
 
 } // namespace wash::mpi
