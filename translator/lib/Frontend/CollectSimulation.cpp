@@ -2,6 +2,7 @@
 #include "wash/translator/Frontend/CollectSimulation.h"
 #include "wash/translator/Frontend/CheckRegistrationFlow.h"
 #include "wash/translator/Frontend/ForceName.h"
+#include "wash/translator/Frontend/ParameterBindings.h"
 #include "wash/translator/Frontend/ResolveKernel.h"
 #include "wash/translator/Frontend/TypeName.h"
 #include "wash/translator/Frontend/WashApi.h"
@@ -47,30 +48,101 @@ private:
       return;
     if (isa<ForStmt, WhileStmt, DoStmt, CXXForRangeStmt>(S))
       InLoop = true;
-    if (const auto *CE = dyn_cast<CallExpr>(S))
-      call(CE, InLoop);
     if (const auto *L = dyn_cast<LambdaExpr>(S)) {
       // The body runs when the lambda is called, and is walked then.
       for (const Expr *Init : L->capture_inits())
         walk(Init, InLoop);
       return;
     }
-    for (const Stmt *Child : S->children())
+    if (const auto *DS = dyn_cast<DeclStmt>(S))
+      return declarations(DS, InLoop);
+    // Operands and arguments first: C++ evaluates them before the call.
+    unsigned Registering = 0;
+    for (const Stmt *Child : S->children()) {
+      unsigned Before = Registrations;
       walk(Child, InLoop);
+      Registering += Registrations > Before;
+    }
+    if (Registering > 1 && !sequencedLeftToRight(S))
+      D.report(DiagId::RegistrationUnsequenced, S->getBeginLoc());
+    if (const auto *CE = dyn_cast<CallExpr>(S))
+      call(CE, InLoop);
+  }
+
+  /// A static local's initialiser runs the first time only: what it
+  /// registers depends on how often its function is called.
+  void declarations(const DeclStmt *DS, bool InLoop) {
+    for (const Decl *Dcl : DS->decls()) {
+      unsigned Before = Registrations;
+      const auto *VD = dyn_cast<VarDecl>(Dcl);
+      if (!VD)
+        continue;
+      if (const Expr *Init = VD->getInit())
+        walk(Init, InLoop);
+      if (VD->isStaticLocal() && Registrations > Before)
+        D.report(DiagId::RegistrationInStaticInit, VD->getLocation(), {VD->getName().str()});
+    }
+  }
+
+  /// Whether C++ evaluates S's operands in the order the walk visits them
+  /// (C++17): a comma, && and ||, << and >>, a subscript, ?: (its condition
+  /// first), and braced lists. Function arguments, the other operators and
+  /// assignment (right before left) are not.
+  static bool sequencedLeftToRight(const Stmt *S) {
+    if (const auto *B = dyn_cast<BinaryOperator>(S))
+      return B->getOpcode() == BO_Comma || B->isLogicalOp() || B->isShiftOp();
+    if (const auto *Op = dyn_cast<CXXOperatorCallExpr>(S)) {
+      switch (Op->getOperator()) {
+      case OO_Comma:
+      case OO_AmpAmp:
+      case OO_PipePipe:
+      case OO_LessLess:
+      case OO_GreaterGreater:
+      case OO_Subscript:
+        return true;
+      default:
+        return false;
+      }
+    }
+    if (const auto *C = dyn_cast<CXXConstructExpr>(S))
+      return C->isListInitialization();
+    if (isa<CallExpr, CXXNewExpr>(S))
+      return false;
+    // Statements run in order; other expressions have one operand that can
+    // register, or sequence theirs (?:, InitListExpr).
+    return true;
   }
 
   void call(const CallExpr *CE, bool InLoop) {
     const FunctionDecl *FD = CE->getDirectCallee();
     if (!FD)
       return;
+    if (isNonLocalJump(FD))
+      D.report(DiagId::RegistrationWithLongJump, CE->getBeginLoc(), {FD->getName().str()});
     if (const ApiCallInfo *Call = washCall(FD); Call && Call->readFromMain()) {
+      ++Registrations;
       Reached.insert(CE->getBeginLoc().getRawEncoding());
       registration(CE, *Call, InLoop);
       return;
     }
     const FunctionDecl *Def = FD->getDefinition();
-    if (Def && isUserCode(Ctx.getSourceManager(), Def))
-      walkFunction(Def, InLoop);
+    if (!Def || !isUserCode(Ctx.getSourceManager(), Def))
+      return;
+    // The callee's parameters are bound to this call's arguments.
+    CallContext Inner{CE, Def, Current};
+    Current = &Inner;
+    walkFunction(Def, InLoop);
+    Current = Inner.Outer;
+  }
+
+  /// setjmp and longjmp: a jump back re-runs registrations the walk reads
+  /// once, or a jump out skips them.
+  static bool isNonLocalJump(const FunctionDecl *FD) {
+    static const std::set<std::string> Names = {"setjmp",  "_setjmp",    "__sigsetjmp", "sigsetjmp",
+                                                "longjmp", "_longjmp",   "siglongjmp",
+                                                "__longjmp_chk"};
+    return FD->getIdentifier() && FD->getDeclContext()->getRedeclContext()->isTranslationUnit() &&
+           Names.count(FD->getName().str());
   }
 
   SettingValue value(const Expr *E, std::optional<std::string> Constant) {
@@ -93,7 +165,7 @@ private:
     if (CE->getNumArgs() < 2 || isa<CXXDefaultArgExpr>(CE->getArg(1)->IgnoreImplicit()))
       return;
     const Expr *Rule = CE->getArg(1);
-    auto V = evaluateInt(Rule, Ctx);
+    auto V = evaluateInt(Rule, Ctx, Current);
     if (!V || (*V != 0 && *V != 1)) {
       D.report(DiagId::SupportRuleNotConstant, Rule->getExprLoc());
       return;
@@ -115,28 +187,28 @@ private:
       M.Sim.CallsStart = true;
       break;
     case ApiCall::set_precision:
-      if (auto S = evaluateString(Arg, Ctx); S && (*S == "double" || *S == "float"))
+      if (auto S = evaluateString(Arg, Ctx, Current); S && (*S == "double" || *S == "float"))
         M.Sim.Precision = *S;
       else
         D.report(DiagId::PrecisionInvalid, Arg->getExprLoc());
       break;
     case ApiCall::set_influence_radius:
-      M.Sim.InfluenceRadius = value(Arg, evaluateNumber(Arg, Ctx));
+      M.Sim.InfluenceRadius = value(Arg, evaluateNumber(Arg, Ctx, Current));
       break;
     case ApiCall::set_smoothing_length_support:
-      M.Sim.SmoothingLengthSupport = value(Arg, evaluateNumber(Arg, Ctx));
+      M.Sim.SmoothingLengthSupport = value(Arg, evaluateNumber(Arg, Ctx, Current));
       supportRule(CE);
       break;
     case ApiCall::set_max_iterations: {
-      auto N = evaluateInt(Arg, Ctx);
+      auto N = evaluateInt(Arg, Ctx, Current);
       M.Sim.MaxIterations = value(Arg, N ? std::optional(std::to_string(*N)) : std::nullopt);
       break;
     }
     case ApiCall::set_simulation_name:
-      M.Sim.SimulationNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
+      M.Sim.SimulationNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx, Current))));
       break;
     case ApiCall::set_output_file_name:
-      M.Sim.OutputFileNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx))));
+      M.Sim.OutputFileNames.push_back(value(Arg, quoted(evaluateString(Arg, Ctx, Current))));
       break;
     case ApiCall::add_force:
       addForce(CE);
@@ -183,8 +255,8 @@ private:
 
   /// The operation and variable of `add_reduction_kernel(&f, op, "variable")`.
   bool reduction(const CallExpr *CE, Kernel &K) {
-    auto Op = evaluateInt(CE->getArg(1), Ctx);
-    auto Var = evaluateString(CE->getArg(2), Ctx);
+    auto Op = evaluateInt(CE->getArg(1), Ctx, Current);
+    auto Var = evaluateString(CE->getArg(2), Ctx, Current);
     if (!Op || *Op < 0 || *Op > 2) {
       D.report(DiagId::ReductionNotConstant, CE->getArg(1)->getExprLoc(), {"operation"});
       return false;
@@ -215,9 +287,9 @@ private:
       if (isa<CXXDefaultArgExpr>(Arg))
         continue;
       // "" is every type, as the default argument says.
-      if (auto S = evaluateString(Arg, Ctx); S && S->empty())
+      if (auto S = evaluateString(Arg, Ctx, Current); S && S->empty())
         continue;
-      auto Name = knownParticleType(Arg, Ctx, D, M.Types);
+      auto Name = knownParticleType(Arg, Ctx, D, M.Types, Current);
       if (!Name)
         return false;
       *Into[I] = *Name;
@@ -227,7 +299,7 @@ private:
 
   void addParticleType(const CallExpr *CE) {
     const Expr *NameArg = CE->getArg(0);
-    auto Name = particleTypeName(NameArg, Ctx, D);
+    auto Name = particleTypeName(NameArg, Ctx, D, Current);
     if (!Name)
       return;
     for (const ParticleType &T : M.Types)
@@ -241,11 +313,11 @@ private:
 
   void addForce(const CallExpr *CE) {
     const Expr *NameArg = CE->getArg(0), *DimArg = CE->getArg(1);
-    auto Name = forceName(NameArg, Ctx, D);
+    auto Name = forceName(NameArg, Ctx, D, Current);
     if (!Name)
       return;
     unsigned SimDim = M.Sim.Dimension;
-    auto Dim = evaluateInt(DimArg, Ctx);
+    auto Dim = evaluateInt(DimArg, Ctx, Current);
     if (!Dim) {
       D.report(DiagId::ForceDimNotConstant, DimArg->getExprLoc(), {*Name});
       return;
@@ -270,6 +342,10 @@ private:
   Model &M;
   AstRefs &Refs;
   std::vector<const FunctionDecl *> Stack;
+  /// Registration calls reached so far.
+  unsigned Registrations = 0;
+  /// The calls the walk followed to where it is: what binds the parameters.
+  const CallContext *Current = nullptr;
   unsigned Budget = 10000;
 };
 

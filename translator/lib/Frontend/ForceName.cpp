@@ -9,8 +9,9 @@ using namespace clang;
 
 namespace wash::tr {
 
-std::optional<std::string> forceName(const Expr *NameArg, ASTContext &Ctx, Diagnoser &D) {
-  std::optional<std::string> Name = evaluateString(NameArg, Ctx);
+std::optional<std::string> forceName(const Expr *NameArg, ASTContext &Ctx, Diagnoser &D,
+                                     const CallContext *Context) {
+  std::optional<std::string> Name = evaluateString(NameArg, Ctx, Context);
   if (!Name) {
     D.report(DiagId::ForceNameNotConstant, NameArg->getExprLoc());
     return std::nullopt;

@@ -9,8 +9,9 @@ using namespace clang;
 
 namespace wash::tr {
 
-std::optional<std::string> particleTypeName(const Expr *NameArg, ASTContext &Ctx, Diagnoser &D) {
-  std::optional<std::string> Name = evaluateString(NameArg, Ctx);
+std::optional<std::string> particleTypeName(const Expr *NameArg, ASTContext &Ctx, Diagnoser &D,
+                                            const CallContext *Context) {
+  std::optional<std::string> Name = evaluateString(NameArg, Ctx, Context);
   if (!Name) {
     D.report(DiagId::ParticleTypeNotConstant, NameArg->getExprLoc());
     return std::nullopt;
@@ -27,8 +28,9 @@ std::optional<std::string> particleTypeName(const Expr *NameArg, ASTContext &Ctx
 }
 
 std::optional<std::string> knownParticleType(const Expr *NameArg, ASTContext &Ctx, Diagnoser &D,
-                                             const std::vector<ParticleType> &Types) {
-  std::optional<std::string> Name = evaluateString(NameArg, Ctx);
+                                             const std::vector<ParticleType> &Types,
+                                             const CallContext *Context) {
+  std::optional<std::string> Name = evaluateString(NameArg, Ctx, Context);
   if (!Name) {
     D.report(DiagId::ParticleTypeNotConstant, NameArg->getExprLoc());
     return std::nullopt;

@@ -1,5 +1,6 @@
 //===- WashApi.cpp --------------------------------------------------------===//
 #include "wash/translator/Frontend/WashApi.h"
+#include "wash/translator/Frontend/ParameterBindings.h"
 
 #include "clang/AST/DeclCXX.h"
 #include "clang/AST/DeclTemplate.h"
@@ -112,6 +113,8 @@ static const Expr *stripStringWrappers(const Expr *E) {
       E = C->getSubExpr();
     else if (const auto *F = dyn_cast<CXXFunctionalCastExpr>(E))
       E = F->getSubExpr();
+    else if (const auto *D = dyn_cast<CXXDefaultArgExpr>(E))
+      E = D->getExpr(); // A default names no parameter: it needs no context.
     else if (const auto *CE = dyn_cast<CXXConstructExpr>(E); CE && convertsOneArgument(CE))
       E = CE->getArg(0); // std::string(const char *) or a copy of a string.
     else
@@ -119,8 +122,93 @@ static const Expr *stripStringWrappers(const Expr *E) {
   }
 }
 
-std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx) {
-  for (unsigned Depth = 0; E && Depth < 16; ++Depth) {
+/// Whether Parent, holding Use, only reads the variable Use names.
+static bool onlyReads(const Stmt *Parent, const DeclRefExpr *Use) {
+  if (const auto *Cast = dyn_cast<ImplicitCastExpr>(Parent))
+    return Cast->getCastKind() == CK_LValueToRValue || Cast->getCastKind() == CK_NoOp;
+  if (const auto *Member = dyn_cast<MemberExpr>(Parent)) {
+    const auto *Method = dyn_cast<CXXMethodDecl>(Member->getMemberDecl());
+    return Method && Method->isConst();
+  }
+  const FunctionDecl *Callee = nullptr;
+  llvm::ArrayRef<const Expr *> Args;
+  if (const auto *Construct = dyn_cast<CXXConstructExpr>(Parent)) {
+    Callee = Construct->getConstructor();
+    Args = llvm::ArrayRef(Construct->getArgs(), Construct->getNumArgs());
+  } else if (const auto *Call = dyn_cast<CallExpr>(Parent)) {
+    Callee = Call->getDirectCallee();
+    Args = llvm::ArrayRef(Call->getArgs(), Call->getNumArgs());
+    if (isa<CXXOperatorCallExpr>(Call) && isa_and_nonnull<CXXMethodDecl>(Callee)) {
+      if (!Args.empty() && Args[0] == Use) // the object of an operator
+        return cast<CXXMethodDecl>(Callee)->isConst();
+      Args = Args.drop_front();
+    }
+  }
+  if (!Callee)
+    return false;
+  // Bound to a parameter that cannot change it: a copy or a const reference.
+  for (unsigned I = 0; I < Args.size(); ++I)
+    if (Args[I] == Use) {
+      if (I >= Callee->getNumParams())
+        return false;
+      QualType T = Callee->getParamDecl(I)->getType();
+      return !T->isReferenceType() || T.getNonReferenceType().isConstQualified();
+    }
+  return false;
+}
+
+/// Whether the body of P's function may change P: the value a caller binds
+/// is then not the value a use reads.
+static bool mayBeChanged(const ParmVarDecl *P) {
+  if (P->getType().isConstQualified())
+    return false;
+  QualType T = P->getType();
+  if (T->isReferenceType())
+    return !T.getNonReferenceType().isConstQualified();
+  const auto *FD = dyn_cast<FunctionDecl>(P->getDeclContext());
+  const Stmt *Body = FD ? FD->getBody() : nullptr;
+  if (!Body)
+    return true;
+  // Any use of P other than reading its value may change it.
+  bool Changed = false;
+  std::vector<const Stmt *> Work{Body};
+  while (!Changed && !Work.empty()) {
+    const Stmt *S = Work.back();
+    Work.pop_back();
+    for (const Stmt *Child : S->children()) {
+      const auto *DRE = dyn_cast_or_null<DeclRefExpr>(Child);
+      if (!DRE || DRE->getDecl() != P) {
+        if (Child)
+          Work.push_back(Child);
+        continue;
+      }
+      Changed = Changed || !onlyReads(S, DRE);
+    }
+  }
+  return Changed;
+}
+
+static std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx,
+                                                 const CallContext *Context, unsigned Depth);
+
+/// The value every visible call binds P to.
+static std::optional<std::string> soleValue(const ParmVarDecl *P, ASTContext &Ctx,
+                                            unsigned Depth) {
+  const std::vector<const CallExpr *> &Calls = visibleCalls(P, Ctx);
+  std::optional<std::string> Value;
+  for (const CallExpr *Call : Calls) {
+    auto Bound = evaluateString(argumentFor(Call, Call->getDirectCallee(), P), Ctx, nullptr,
+                                Depth + 1);
+    if (!Bound || (Value && *Value != *Bound))
+      return std::nullopt;
+    Value = Bound;
+  }
+  return Value;
+}
+
+static std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx,
+                                                 const CallContext *Context, unsigned Depth) {
+  for (; E && Depth < 16; ++Depth) {
     E = stripStringWrappers(E);
     // A literal reaches a std::string as a const char *: up to its first NUL.
     if (const auto *S = dyn_cast<StringLiteral>(E); S && S->getCharByteWidth() == 1)
@@ -130,9 +218,23 @@ std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx) {
     if (E->getType()->isPointerType() && !E->isValueDependent())
       if (auto S = E->tryEvaluateString(Ctx))
         return S;
-    // A const variable whose initialiser is a constant string.
     const auto *DRE = dyn_cast<DeclRefExpr>(E);
     const auto *VD = DRE ? dyn_cast<VarDecl>(DRE->getDecl()) : nullptr;
+    // A parameter: what the call binds it to, never its default as such.
+    if (const auto *P = dyn_cast_or_null<ParmVarDecl>(VD)) {
+      if (mayBeChanged(P))
+        return std::nullopt;
+      const CallContext *C = Context;
+      const Expr *Arg = nullptr;
+      for (; C && !Arg; C = C->Outer)
+        Arg = argumentFor(C->Call, C->Callee, P);
+      if (!Arg)
+        return Context ? std::nullopt : soleValue(P, Ctx, Depth);
+      E = Arg;
+      Context = C; // the caller's context: the link after the call's
+      continue;
+    }
+    // A const variable whose initialiser is a constant string.
     if (!VD || !VD->getType().isConstQualified() || !VD->getAnyInitializer())
       return std::nullopt;
     E = VD->getAnyInitializer();
@@ -140,16 +242,44 @@ std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx) {
   return std::nullopt;
 }
 
-std::optional<long long> evaluateInt(const Expr *E, ASTContext &Ctx) {
+std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx,
+                                          const CallContext *Context) {
+  return evaluateString(E, Ctx, Context, 0);
+}
+
+/// E with the parameters Context binds replaced by their arguments.
+static const Expr *bindArguments(const Expr *E, const CallContext *Context) {
+  for (unsigned Depth = 0; E && Context && Depth < 16; ++Depth) {
+    const Expr *Plain = E->IgnoreParenImpCasts();
+    if (const auto *D = dyn_cast<CXXDefaultArgExpr>(Plain))
+      return D->getExpr();
+    const auto *DRE = dyn_cast<DeclRefExpr>(Plain);
+    const auto *P = DRE ? dyn_cast<ParmVarDecl>(DRE->getDecl()) : nullptr;
+    if (!P || mayBeChanged(P))
+      return E;
+    const Expr *Arg = nullptr;
+    for (; Context && !Arg; Context = Context->Outer)
+      Arg = argumentFor(Context->Call, Context->Callee, P);
+    if (!Arg)
+      return E;
+    E = Arg;
+  }
+  return E;
+}
+
+std::optional<long long> evaluateInt(const Expr *E, ASTContext &Ctx, const CallContext *Context) {
+  E = bindArguments(E, Context);
   Expr::EvalResult R;
-  if (E->isValueDependent() || !E->EvaluateAsInt(R, Ctx))
+  if (!E || E->isValueDependent() || !E->EvaluateAsInt(R, Ctx))
     return std::nullopt;
   return R.Val.getInt().getExtValue();
 }
 
-std::optional<std::string> evaluateNumber(const Expr *E, ASTContext &Ctx) {
+std::optional<std::string> evaluateNumber(const Expr *E, ASTContext &Ctx,
+                                          const CallContext *Context) {
+  E = bindArguments(E, Context);
   Expr::EvalResult R;
-  if (E->isValueDependent() || !E->EvaluateAsRValue(R, Ctx))
+  if (!E || E->isValueDependent() || !E->EvaluateAsRValue(R, Ctx))
     return std::nullopt;
   double V;
   if (R.Val.isFloat())

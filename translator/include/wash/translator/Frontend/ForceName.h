@@ -8,6 +8,7 @@
 #pragma once
 
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/ParameterBindings.h"
 
 #include "clang/AST/ASTContext.h"
 #include "clang/AST/Expr.h"
@@ -21,6 +22,6 @@ namespace wash::tr {
 /// as C++ evaluates it. Reports ForceNameNotConstant or ForceNameInvalid at
 /// the argument and returns nullopt when it cannot name a force.
 std::optional<std::string> forceName(const clang::Expr *NameArg, clang::ASTContext &Ctx,
-                                     Diagnoser &D);
+                                     Diagnoser &D, const CallContext *Context = nullptr);
 
 } // namespace wash::tr

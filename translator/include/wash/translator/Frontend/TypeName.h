@@ -8,6 +8,7 @@
 #pragma once
 
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/ParameterBindings.h"
 #include "wash/translator/Model.h"
 
 #include "clang/AST/ASTContext.h"
@@ -22,10 +23,11 @@ namespace wash::tr {
 /// The name NameArg evaluates to, an identifier; reports
 /// ParticleTypeNotConstant or ParticleTypeInvalid and returns nullopt otherwise.
 std::optional<std::string> particleTypeName(const clang::Expr *NameArg, clang::ASTContext &Ctx,
-                                            Diagnoser &D);
+                                            Diagnoser &D, const CallContext *Context = nullptr);
 
 /// As particleTypeName, and one of Types (ParticleTypeUnknown otherwise).
 std::optional<std::string> knownParticleType(const clang::Expr *NameArg, clang::ASTContext &Ctx,
-                                             Diagnoser &D, const std::vector<ParticleType> &Types);
+                                             Diagnoser &D, const std::vector<ParticleType> &Types,
+                                             const CallContext *Context = nullptr);
 
 } // namespace wash::tr

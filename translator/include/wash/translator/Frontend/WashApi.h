@@ -18,6 +18,8 @@
 
 namespace wash::tr {
 
+struct CallContext;
+
 /// FD is a free function directly in namespace wash (the API or its math).
 bool isWashFunction(const clang::FunctionDecl *FD);
 /// The table's entry for FD, if it is one of the API's free functions.
@@ -43,10 +45,17 @@ bool isUserCode(const clang::SourceManager &SM, const clang::Decl *D);
 /// The value of a string argument: a literal, a constant the evaluator can
 /// fold, or a const variable (std::string, const char *) initialised by one,
 /// as C++ evaluates it (a literal up to its first NUL; not std::string(s, n)).
-std::optional<std::string> evaluateString(const clang::Expr *E, clang::ASTContext &Ctx);
-std::optional<long long> evaluateInt(const clang::Expr *E, clang::ASTContext &Ctx);
+/// A parameter is read as the call in Context binds it (its argument, or its
+/// default when the caller passes none); without a context, as every call of
+/// its function binds it when they all agree and are all visible
+/// (ParameterBindings.h). A parameter the function may change is not constant.
+std::optional<std::string> evaluateString(const clang::Expr *E, clang::ASTContext &Ctx,
+                                          const CallContext *Context = nullptr);
+std::optional<long long> evaluateInt(const clang::Expr *E, clang::ASTContext &Ctx,
+                                     const CallContext *Context = nullptr);
 /// Shortest text that reads back as the same double.
-std::optional<std::string> evaluateNumber(const clang::Expr *E, clang::ASTContext &Ctx);
+std::optional<std::string> evaluateNumber(const clang::Expr *E, clang::ASTContext &Ctx,
+                                          const CallContext *Context = nullptr);
 /// The source text of E, for settings only known at run time.
 std::string sourceText(const clang::Expr *E, clang::ASTContext &Ctx);
 
