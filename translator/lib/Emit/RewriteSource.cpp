@@ -12,6 +12,7 @@
 #include <map>
 #include <set>
 #include <string_view>
+#include <tuple>
 
 using namespace clang;
 
@@ -40,14 +41,20 @@ public:
   Edits(SourceManager &SM, const LangOptions &LangOpts, const UserFiles &Files)
       : SM(SM), LangOpts(LangOpts), Files(Files) {}
 
-  /// The text of a token range as rewritten so far ("" in a macro).
-  std::string text(SourceRange Range) const {
-    if (Range.getBegin().isMacroID() || Range.getEnd().isMacroID())
-      return "";
-    FileID F = Files.rewritten(Range.getBegin());
+  /// The text of a token range as rewritten so far. A range that begins or
+  /// ends with a whole macro expansion (`x * GAIN`, `M_PI`) is the text
+  /// of the source it was written as; nullopt when it cuts into a macro.
+  std::optional<std::string> text(SourceRange Range) const {
+    CharSourceRange Chars = CharSourceRange::getTokenRange(Range);
+    if (Range.getBegin().isMacroID() || Range.getEnd().isMacroID()) {
+      Chars = Lexer::makeFileCharRange(Chars, SM, LangOpts);
+      if (Chars.isInvalid())
+        return std::nullopt;
+    }
+    FileID F = Files.rewritten(Chars.getBegin());
     if (F.isInvalid())
-      return Lexer::getSourceText(CharSourceRange::getTokenRange(Range), SM, LangOpts).str();
-    auto [Begin, End] = offsets(Range);
+      return Lexer::getSourceText(Chars, SM, LangOpts).str();
+    auto [Begin, End] = offsets(Chars);
     StringRef Buffer = SM.getBufferData(F);
     std::string Out;
     unsigned At = Begin;
@@ -91,11 +98,16 @@ public:
     return Out.append(Buffer.substr(At));
   }
 
-private:
   std::pair<unsigned, unsigned> offsets(SourceRange Range) const {
+    return offsets(CharSourceRange::getTokenRange(Range));
+  }
+
+private:
+  std::pair<unsigned, unsigned> offsets(CharSourceRange Range) const {
     unsigned Begin = SM.getFileOffset(Range.getBegin());
-    unsigned End =
-        SM.getFileOffset(Range.getEnd()) + Lexer::MeasureTokenLength(Range.getEnd(), SM, LangOpts);
+    unsigned End = SM.getFileOffset(Range.getEnd());
+    if (Range.isTokenRange())
+      End += Lexer::MeasureTokenLength(Range.getEnd(), SM, LangOpts);
     return {Begin, std::max(Begin, End)};
   }
 
@@ -121,6 +133,23 @@ public:
     return RecursiveASTVisitor::TraverseDecl(Decl);
   }
 
+  /// An alias of the particle type (`using Particle = wash::Particle;`)
+  /// names the generated particle type; its uses are rewritten where they are.
+  bool TraverseTypeAliasDecl(TypeAliasDecl *Alias) {
+    bool Outer = InAlias;
+    InAlias = true;
+    bool Result = RecursiveASTVisitor::TraverseTypeAliasDecl(Alias);
+    InAlias = Outer;
+    return Result;
+  }
+  bool TraverseTypedefDecl(TypedefDecl *Alias) {
+    bool Outer = InAlias;
+    InAlias = true;
+    bool Result = RecursiveASTVisitor::TraverseTypedefDecl(Alias);
+    InAlias = Outer;
+    return Result;
+  }
+
   bool TraverseTypeLoc(TypeLoc TL) {
     if (!TL || !inUserFile(TL.getBeginLoc()))
       return RecursiveASTVisitor::TraverseTypeLoc(TL);
@@ -136,7 +165,8 @@ public:
         return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()},
                        "wash_gen::NeighbourList");
       if (isParticleType(T)) // a const reference or a copy: a self or a neighbour
-        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()}, "auto");
+        return replace({withQualifier(TL.getBeginLoc()), TL.getEndLoc()},
+                       InAlias ? "wash_gen::Self" : "auto");
     }
     return RecursiveASTVisitor::TraverseTypeLoc(TL);
   }
@@ -307,8 +337,14 @@ private:
     return Begin.getLocWithOffset(-(SM.getCharacterData(Begin) - P));
   }
 
-  /// The text of a range as rewritten so far.
-  std::string text(SourceRange Range) const { return R.text(Range); }
+  /// The text of a range as rewritten so far; a range that cuts into a macro
+  /// expansion cannot be rewritten.
+  std::string text(SourceRange Range) const {
+    if (std::optional<std::string> Text = R.text(Range))
+      return *Text;
+    D.report(DiagId::CodegenInMacro, Range.getBegin());
+    return "";
+  }
 
   /// What a dropped registration did, for the comment that replaces it: the
   /// call as written, whitespace collapsed except for newlines (the line
@@ -347,14 +383,18 @@ private:
   /// Replaces Range (token range) keeping the number of lines, so the user's
   /// line numbers still hold in the generated file.
   bool replace(SourceRange Range, std::string Text) {
-    // The traversal can reach one TypeLoc twice (a parameter through its
-    // declaration and through the function's type): rewrite each range once.
-    if (!Done.insert({Range.getBegin().getRawEncoding(), Range.getEnd().getRawEncoding()}).second)
-      return true;
     if (Range.getBegin().isMacroID() || Range.getEnd().isMacroID()) {
       D.report(DiagId::CodegenInMacro, Range.getBegin());
       return true;
     }
+    // Each range of a file is rewritten once: the traversal can reach one
+    // TypeLoc twice (a parameter through its declaration and through the
+    // function's type), and a header included twice is one file of the
+    // project, rewritten as its first inclusion reads (a later one's text,
+    // computed over those edits, would nest them).
+    auto [Begin, End] = R.offsets(Range);
+    if (!Done.insert({Files.rewritten(Range.getBegin()), Begin, End}).second)
+      return true;
     std::string Old = text(Range);
     size_t Lines = std::count(Old.begin(), Old.end(), '\n');
     size_t NewLines = std::count(Text.begin(), Text.end(), '\n');
@@ -370,7 +410,9 @@ private:
   const UserFiles &Files;
   Diagnoser &D;
   Edits &R;
-  std::set<std::pair<unsigned, unsigned>> Done;
+  /// The ranges rewritten: (file, begin offset, end offset).
+  std::set<std::tuple<FileID, unsigned, unsigned>> Done;
+  bool InAlias = false;
 };
 
 } // namespace
