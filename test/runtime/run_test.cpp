@@ -120,7 +120,17 @@ TEST_F(RunTest, APeriodicBoxMustBeLongerThanTwiceTheRadius) {
 TEST_F(RunTest, ATranslatedProgramRunsOnlyWhatItWasTranslatedFor) {
   set_precision("float");
   EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),
-            "this program was translated for double precision, but main asked for float");
+            "this program was translated for double precision, but main asked for float; call "
+            "set_precision unconditionally in main");
+  runSettings().useFloat.reset();
+  // `if (argc > 5) set_precision("float");` is translated for float: a run
+  // that skips the call would store doubles in the reference.
+  const Translation forFloat{.backend = "serial", .dimensions = 2, .floatStorage = true};
+  EXPECT_EQ(messageOf<detail::RunError>([&] { detail::Run(forFloat, true); }),
+            "this program was translated for float precision, but main did not call "
+            "set_precision(\"float\") in this run; call set_precision unconditionally in main");
+  set_precision("float");
+  EXPECT_NO_THROW(detail::Run(forFloat, true));
   runSettings().useFloat.reset();
   runSettings().search = {.support = 2.0};
   EXPECT_EQ(messageOf<detail::RunError>([] { detail::Run(serial2d, true); }),

@@ -20,7 +20,14 @@ bool checkedPrecision(const Translation &translated, const RunSettings &s) {
   if (s.useFloat && *s.useFloat != translatedForFloat)
     throw RunError(std::string("this program was translated for ") +
                    (translatedForFloat ? "float" : "double") + " precision, but main asked for " +
-                   (*s.useFloat ? "float" : "double"));
+                   (*s.useFloat ? "float" : "double") +
+                   "; call set_precision unconditionally in main");
+  // The reference stores doubles unless main asks: a float translation of a
+  // main that skipped its set_precision call this run would differ from it.
+  if (!s.useFloat && translatedForFloat)
+    throw RunError("this program was translated for float precision, but main did not call "
+                   "set_precision(\"float\") in this run; call set_precision unconditionally "
+                   "in main");
   return translatedForFloat;
 }
 
