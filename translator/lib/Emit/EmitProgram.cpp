@@ -49,6 +49,42 @@ std::string absolute(const std::string &Path) {
   return std::string(P);
 }
 
+/// The user's macros that could meet an identifier of the generated header
+/// or driver (not reserved names, NDEBUG or WASH_ settings, which configure
+/// rather than name things).
+std::vector<std::string> macrosToHide(const IncludeDirectives &Includes) {
+  std::vector<std::string> Names;
+  for (const UserMacro &M : Includes.Macros)
+    if (M.Name[0] != '_' && M.Name != "NDEBUG" && M.Name.rfind("WASH_", 0) != 0)
+      Names.push_back(M.Name);
+  return Names;
+}
+
+/// Generated code between hideMacros and restoreMacros sees none of Names.
+std::string hideMacros(const std::vector<std::string> &Names) {
+  std::string Out;
+  for (const std::string &N : Names)
+    Out += "#pragma push_macro(\"" + N + "\")\n#undef " + N + "\n";
+  return Out;
+}
+
+std::string restoreMacros(const std::vector<std::string> &Names) {
+  std::string Out;
+  for (const std::string &N : Names)
+    Out += "#pragma pop_macro(\"" + N + "\")\n";
+  return Out;
+}
+
+/// Header, its first line (#pragma once or a comment) kept first, with the
+/// user's macros hidden inside it.
+std::string withMacrosHidden(const std::string &Header, const std::vector<std::string> &Names) {
+  if (Names.empty())
+    return Header;
+  size_t Once = Header.find("#pragma once\n");
+  size_t At = Once == std::string::npos ? 0 : Once + 13;
+  return Header.substr(0, At) + hideMacros(Names) + Header.substr(At) + restoreMacros(Names);
+}
+
 } // namespace
 
 bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
@@ -72,11 +108,14 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
   // compiler messages and CallSite locations point at the simulation source.
   std::string Source =
       generatedBanner(Plan) + "#line 1 \"" + absolute(Opts.Source) + "\"\n" + *Body;
+  // The driver follows the user's code: their macros must not reach it.
+  const std::vector<std::string> Hidden = macrosToHide(Includes);
+  Source += hideMacros(Hidden);
   size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;
   Source += "#line " + std::to_string(NextLine) + " \"" + Plan.sourceName() + "\"\n" +
             emitDriver(M, Plan, Callees);
 
-  Files = {{Plan.headerName(), emitStorageHeader(M, Plan)},
+  Files = {{Plan.headerName(), withMacrosHidden(emitStorageHeader(M, Plan), Hidden)},
            {Plan.sourceName(), Source},
            {"CMakeLists.txt", emitCMakeLists(Plan, packageHints(Opts))}};
   // Each header the simulation includes, rewritten, keeps its file name and

@@ -266,6 +266,11 @@ public:
     replace(Range, "wash_gen::" + CodePlan::variableSlot(*Name));
   }
 
+  /// Names the rewrite wrote into the user's code (wash_gen, P, Self, column
+  /// members...), each with the first place it did: a user macro of the same
+  /// name would replace them.
+  std::map<std::string, SourceLocation> Introduced;
+
   /// The variables lowerVariableRead gave slots, in order of first use.
   std::vector<std::string> Variables;
 
@@ -370,6 +375,54 @@ private:
     return Note + (Call.Kernel ? ": run by the driver" : ": registered by the translator");
   }
 
+  /// The identifiers of Text outside comments and string and character
+  /// literals (where macros do not expand).
+  static std::map<std::string, unsigned> identifiers(const std::string &Text) {
+    std::map<std::string, unsigned> Names;
+    for (size_t I = 0; I < Text.size();) {
+      if (Text.compare(I, 2, "/*") == 0) {
+        size_t End = Text.find("*/", I + 2);
+        I = End == std::string::npos ? Text.size() : End + 2;
+        continue;
+      }
+      if (Text.compare(I, 2, "//") == 0) {
+        size_t End = Text.find('\n', I);
+        I = End == std::string::npos ? Text.size() : End;
+        continue;
+      }
+      if (Text[I] == '"' || Text[I] == '\'') {
+        size_t End = I + 1;
+        while (End < Text.size() && Text[End] != Text[I])
+          End += Text[End] == '\\' ? 2 : 1;
+        I = End + 1;
+        continue;
+      }
+      if (std::isdigit((unsigned char)Text[I])) { // a number's suffix is not a name
+        while (I < Text.size() && (std::isalnum((unsigned char)Text[I]) || Text[I] == '.'))
+          ++I;
+        continue;
+      }
+      if (!std::isalpha((unsigned char)Text[I]) && Text[I] != '_') {
+        ++I;
+        continue;
+      }
+      size_t End = I;
+      while (End < Text.size() && (std::isalnum((unsigned char)Text[End]) || Text[End] == '_'))
+        ++End;
+      ++Names[Text.substr(I, End - I)];
+      I = End;
+    }
+    return Names;
+  }
+
+  void noteIntroducedNames(const std::string &Old, const std::string &New, SourceLocation At) {
+    // Counted: `p.set_density(P)` keeps the user's P and adds wash_gen::P.
+    std::map<std::string, unsigned> Before = identifiers(Old);
+    for (const auto &[Name, Count] : identifiers(New))
+      if (Count > Before[Name])
+        Introduced.try_emplace(Name, At);
+  }
+
   /// Whether E's value is unused: it is a statement of its own.
   bool isStatement(const Expr *E) const {
     auto Parents = Ctx.getParents(*E);
@@ -396,6 +449,7 @@ private:
     if (!Done.insert({Files.rewritten(Range.getBegin()), Begin, End}).second)
       return true;
     std::string Old = text(Range);
+    noteIntroducedNames(Old, Text, Range.getBegin());
     size_t Lines = std::count(Old.begin(), Old.end(), '\n');
     size_t NewLines = std::count(Text.begin(), Text.end(), '\n');
     if (NewLines < Lines)
@@ -426,6 +480,11 @@ std::optional<std::vector<RewrittenFile>> rewriteSource(ASTContext &Ctx, const C
   Lowering L(Ctx, Plan, Files, D, R);
   L.TraverseDecl(Ctx.getTranslationUnitDecl());
   L.redirectIncludes(Includes);
+  for (const UserMacro &Macro : Includes.Macros)
+    if (auto It = L.Introduced.find(Macro.Name); It != L.Introduced.end()) {
+      D.report(DiagId::MacroNamesGeneratedCode, Macro.Loc, {Macro.Name});
+      D.report(DiagId::NoteGeneratedNameHere, It->second, {Macro.Name});
+    }
   if (D.hasErrors())
     return std::nullopt;
   if (Variables)

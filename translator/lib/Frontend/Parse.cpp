@@ -19,6 +19,8 @@
 #include "llvm/Support/raw_ostream.h"
 #include "llvm/Support/thread.h"
 
+#include <set>
+
 using namespace clang;
 
 namespace wash::tr {
@@ -30,18 +32,32 @@ constexpr uint64_t MaxSourceBytes = uint64_t(64) << 20;
 using Callback =
     std::function<void(ASTContext &, Diagnoser &, unsigned, const IncludeDirectives &)>;
 
-/// Records every include directive the preprocessor reads, skipped ones too.
+/// Records every include directive the preprocessor reads, skipped ones too,
+/// and the macros user files define.
 class IncludeRecorder : public PPCallbacks {
 public:
-  explicit IncludeRecorder(IncludeDirectives &Out) : Out(Out) {}
+  IncludeRecorder(IncludeDirectives &Out, const SourceManager &SM) : Out(Out), SM(SM) {}
   void InclusionDirective(SourceLocation Hash, const Token &, StringRef, bool,
                           CharSourceRange FileName, OptionalFileEntryRef File, StringRef, StringRef,
                           const Module *, bool, SrcMgr::CharacteristicKind FileType) override {
     Out.push_back({Hash, FileName, File, FileType != SrcMgr::C_User});
   }
 
+  void MacroDefined(const Token &Name, const MacroDirective *MD) override {
+    SourceLocation Loc = MD ? MD->getLocation() : SourceLocation();
+    if (Loc.isInvalid() || !Loc.isFileID() || SM.isInSystemHeader(Loc) ||
+        SM.getFileID(Loc) == SM.getPreambleFileID() || SM.isWrittenInBuiltinFile(Loc) ||
+        SM.isWrittenInCommandLineFile(Loc))
+      return;
+    std::string Spelled = Name.getIdentifierInfo()->getName().str();
+    if (Seen.insert(Spelled).second)
+      Out.Macros.push_back({Spelled, Loc});
+  }
+
 private:
   IncludeDirectives &Out;
+  const SourceManager &SM;
+  std::set<std::string> Seen;
 };
 
 class Consumer : public ASTConsumer {
@@ -67,7 +83,7 @@ public:
   Action(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
   std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance &CI, StringRef) override {
     auto C = std::make_unique<Consumer>(OnAST, Dim);
-    CI.getPreprocessor().addPPCallbacks(std::make_unique<IncludeRecorder>(C->Includes));
+    CI.getPreprocessor().addPPCallbacks(std::make_unique<IncludeRecorder>(C->Includes, CI.getSourceManager()));
     return C;
   }
 

@@ -23,7 +23,17 @@ struct IncludeDirective {
   bool SystemFile = false;          ///< File is a system header.
 };
 
-using IncludeDirectives = std::vector<IncludeDirective>;
+/// A macro the user's files define (not a system header or the command line).
+struct UserMacro {
+  std::string Name;
+  clang::SourceLocation Loc; ///< Its first definition.
+};
+
+/// What the preprocessor read: the include directives, in order, and the
+/// macros user files define (generated code must not meet them).
+struct IncludeDirectives : std::vector<IncludeDirective> {
+  std::vector<UserMacro> Macros;
+};
 
 /// Every file the translation read: Source, then each included file once,
 /// in the order first included (absolute paths).
