@@ -7,8 +7,9 @@ config.test_format = lit.formats.ShTest(execute_external=False)
 config.suffixes = [".cpp"]
 config.test_source_root = os.path.dirname(__file__)
 config.test_exec_root = config.wash_obj_root
-# Inputs/ holds files that tests include or run on; unit/ is GoogleTest.
-config.excludes = ["Inputs", "unit", "CMakeLists.txt"]
+# Inputs/ holds files that tests include or run on; unit/ and frontend/ are
+# GoogleTest.
+config.excludes = ["Inputs", "unit", "frontend", "CMakeLists.txt"]
 
 config.substitutions.append(("%wash_src", config.wash_src_root))
 config.substitutions.append(("%wash", config.wash_bin))
