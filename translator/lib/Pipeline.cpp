@@ -73,6 +73,18 @@ static void storeAccessSets(Model &M, std::vector<AccessSets> Sets) {
   }
 }
 
+static void storeRegistrations(Model &M, Registrations R) {
+  M.Sim = std::move(R.Sim);
+  M.Forces = std::move(R.Forces);
+  M.Types = std::move(R.Types);
+  M.Kernels = std::move(R.Kernels);
+}
+
+static void storeAlwaysWrites(Model &M, std::vector<FieldSet> Writes) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].AlwaysWrites = std::move(Writes[I]);
+}
+
 static void storeFields(Model &M, ResolvedFields R) {
   M.Fields = std::move(R.Fields);
   M.Findings.insert(M.Findings.end(), R.Findings.begin(), R.Findings.end());
@@ -119,21 +131,29 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   };
 
   // Model: read the simulation out of the AST.
-  if (!detectDimension(Ctx, D, ParsedDim, M) || Stop(PassId::DetectDimension))
+  std::optional<unsigned> Dimension = detectDimension(Ctx, D, ParsedDim);
+  if (!Dimension)
     return;
-  if (!collectSimulation(Ctx, D, M, Refs) || Stop(PassId::CollectSimulation))
+  M.Sim.Dimension = *Dimension;
+  if (Stop(PassId::DetectDimension))
+    return;
+  std::optional<Registrations> Registered = collectSimulation(Ctx, D, M.Sim.Dimension, Refs);
+  if (!Registered)
+    return;
+  storeRegistrations(M, std::move(*Registered));
+  if (Stop(PassId::CollectSimulation))
     return;
   if (!checkVariables(Ctx, D) || Stop(PassId::CheckVariables))
     return;
   if (!inferAccesses(Ctx, D, Refs, M) || Stop(PassId::InferAccesses))
     return;
-  findNeighbourDistances(Ctx, D, M);
+  M.Distances = findNeighbourDistances(Ctx, D);
   if (Stop(PassId::FindNeighbourDistances))
     return;
-  findHoistable(Ctx, D, Refs, M);
+  M.Hoisted = findHoistable(Ctx, D, Refs, M.Kernels);
   if (Stop(PassId::FindHoistable))
     return;
-  findAlwaysWrites(Ctx, Refs, M);
+  storeAlwaysWrites(M, findAlwaysWrites(Ctx, Refs, M.Kernels));
   if (Stop(PassId::FindAlwaysWrites))
     return;
 

@@ -21,7 +21,7 @@ namespace {
 
 class Collector {
 public:
-  Collector(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs)
+  Collector(ASTContext &Ctx, Diagnoser &D, Registrations &M, AstRefs &Refs)
       : Ctx(Ctx), D(D), M(M), Refs(Refs) {}
 
   /// Each call is walked where it happens, as if inlined: a helper called
@@ -59,9 +59,9 @@ private:
     // Operands and arguments first: C++ evaluates them before the call.
     unsigned Registering = 0;
     for (const Stmt *Child : S->children()) {
-      unsigned Before = Registrations;
+      unsigned Before = RegistrationCount;
       walk(Child, InLoop);
-      Registering += Registrations > Before;
+      Registering += RegistrationCount > Before;
     }
     if (Registering > 1 && !sequencedLeftToRight(S))
       D.report(DiagId::RegistrationUnsequenced, S->getBeginLoc());
@@ -73,13 +73,13 @@ private:
   /// registers depends on how often its function is called.
   void declarations(const DeclStmt *DS, bool InLoop) {
     for (const Decl *Dcl : DS->decls()) {
-      unsigned Before = Registrations;
+      unsigned Before = RegistrationCount;
       const auto *VD = dyn_cast<VarDecl>(Dcl);
       if (!VD)
         continue;
       if (const Expr *Init = VD->getInit())
         walk(Init, InLoop);
-      if (VD->isStaticLocal() && Registrations > Before)
+      if (VD->isStaticLocal() && RegistrationCount > Before)
         D.report(DiagId::RegistrationInStaticInit, VD->getLocation(), {VD->getName().str()});
     }
   }
@@ -120,7 +120,7 @@ private:
     if (isNonLocalJump(FD))
       D.report(DiagId::RegistrationWithLongJump, CE->getBeginLoc(), {FD->getName().str()});
     if (const ApiCallInfo *Call = washCall(FD); Call && Call->readFromMain()) {
-      ++Registrations;
+      ++RegistrationCount;
       Reached.insert(CE->getBeginLoc().getRawEncoding());
       registration(CE, *Call, InLoop);
       return;
@@ -339,11 +339,11 @@ private:
 
   ASTContext &Ctx;
   Diagnoser &D;
-  Model &M;
+  Registrations &M;
   AstRefs &Refs;
   std::vector<const FunctionDecl *> Stack;
   /// Registration calls reached so far.
-  unsigned Registrations = 0;
+  unsigned RegistrationCount = 0;
   /// The calls the walk followed to where it is: what binds the parameters.
   const CallContext *Current = nullptr;
   unsigned Budget = 10000;
@@ -397,13 +397,16 @@ static const FunctionDecl *findMain(ASTContext &Ctx) {
   return nullptr;
 }
 
-bool collectSimulation(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs) {
+std::optional<Registrations> collectSimulation(ASTContext &Ctx, Diagnoser &D, unsigned Dimension,
+                                              AstRefs &Refs) {
   Refs.Main = findMain(Ctx);
   if (!Refs.Main) {
     SourceManager &SM = Ctx.getSourceManager();
     D.report(DiagId::NoMain, SM.getLocForStartOfFile(SM.getMainFileID()));
-    return false;
+    return std::nullopt;
   }
+  Registrations M;
+  M.Sim.Dimension = Dimension;
   Collector C(Ctx, D, M, Refs);
   C.walkFunction(Refs.Main, /*InLoop=*/false);
   Stragglers S(Ctx.getSourceManager(), D, C.Reached);
@@ -411,7 +414,9 @@ bool collectSimulation(ASTContext &Ctx, Diagnoser &D, Model &M, AstRefs &Refs) {
   checkRegistrationFlow(Ctx, D, Refs.Main);
   if (!M.Sim.CallsStart)
     D.report(DiagId::MissingStart, Refs.Main->getLocation());
-  return !D.hasErrors();
+  if (D.hasErrors())
+    return std::nullopt;
+  return M;
 }
 
 } // namespace wash::tr

@@ -67,7 +67,7 @@ private:
 };
 } // namespace
 
-bool detectDimension(ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M) {
+std::optional<unsigned> detectDimension(ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim) {
   VecFinder F(Ctx.getSourceManager());
   F.TraverseAST(Ctx);
   SourceLocation L2 = F.First[0], L3 = F.First[1];
@@ -76,10 +76,9 @@ bool detectDimension(ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M
     D.report(DiagId::MixedDimensions, TwoFirst ? L3 : L2,
              {TwoFirst ? "2" : "3", TwoFirst ? "3" : "2"});
     D.report(DiagId::NoteFirstVectorHere, TwoFirst ? L2 : L3, {TwoFirst ? "2" : "3"});
-    return false;
+    return std::nullopt;
   }
-  M.Sim.Dimension = L3.isValid() ? 3 : L2.isValid() ? 2 : ParsedDim;
-  return true;
+  return L3.isValid() ? 3 : L2.isValid() ? 2 : ParsedDim;
 }
 
 } // namespace wash::tr

@@ -128,14 +128,14 @@ private:
 
 } // namespace
 
-void findAlwaysWrites(ASTContext &Ctx, const AstRefs &Refs, Model &M) {
+std::vector<FieldSet> findAlwaysWrites(ASTContext &Ctx, const AstRefs &Refs,
+                                       const std::vector<Kernel> &Kernels) {
   AlwaysWrites Finder(Ctx);
-  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
-    Kernel &K = M.Kernels[I];
-    K.AlwaysWrites.clear();
-    if (K.Kind == KernelKind::Update || K.Kind == KernelKind::Force)
-      K.AlwaysWrites = Finder.of(Refs.Kernels[I], 0);
-  }
+  std::vector<FieldSet> Out(Kernels.size());
+  for (unsigned I = 0; I < Kernels.size(); ++I)
+    if (Kernels[I].Kind == KernelKind::Update || Kernels[I].Kind == KernelKind::Force)
+      Out[I] = Finder.of(Refs.Kernels[I], 0);
+  return Out;
 }
 
 } // namespace wash::tr

@@ -64,8 +64,9 @@ struct End {
 
 class FunctionScan : public RecursiveASTVisitor<FunctionScan> {
 public:
-  FunctionScan(ASTContext &Ctx, const Diagnoser &D, const FunctionDecl *F, Model &M)
-      : Ctx(Ctx), D(D), F(F), M(M) {}
+  FunctionScan(ASTContext &Ctx, const Diagnoser &D, const FunctionDecl *F,
+               std::vector<DistanceUse> &Found)
+      : Ctx(Ctx), D(D), F(F), Found(Found) {}
 
   // A lambda may copy the neighbour it is given: its body is left alone.
   bool TraverseLambdaExpr(LambdaExpr *) { return true; }
@@ -101,7 +102,7 @@ public:
     U.Self = S.Self->getNameAsString();
     U.SelfAlways = S.Self->getType()->isLValueReferenceType() &&
                    !S.Self->getType().getNonReferenceType().isConstQualified();
-    M.Distances.push_back(U);
+    Found.push_back(U);
     return true;
   }
 
@@ -273,13 +274,14 @@ private:
   ASTContext &Ctx;
   const Diagnoser &D;
   const FunctionDecl *F;
-  Model &M;
+  std::vector<DistanceUse> &Found;
   std::map<const VarDecl *, const ParmVarDecl *> LoopVars;
 };
 
 class Functions : public RecursiveASTVisitor<Functions> {
 public:
-  Functions(ASTContext &Ctx, const Diagnoser &D, Model &M) : Ctx(Ctx), D(D), M(M) {}
+  Functions(ASTContext &Ctx, const Diagnoser &D, std::vector<DistanceUse> &Found)
+      : Ctx(Ctx), D(D), Found(Found) {}
 
   bool VisitFunctionDecl(FunctionDecl *F) {
     const auto *Method = dyn_cast<CXXMethodDecl>(F);
@@ -294,7 +296,7 @@ public:
       HasParticle |= isParticle(P->getType());
     }
     if (HasList && HasParticle) {
-      FunctionScan Scan(Ctx, D, F, M);
+      FunctionScan Scan(Ctx, D, F, Found);
       Scan.TraverseStmt(F->getBody());
     }
     return true;
@@ -303,15 +305,16 @@ public:
 private:
   ASTContext &Ctx;
   const Diagnoser &D;
-  Model &M;
+  std::vector<DistanceUse> &Found;
 };
 
 } // namespace
 
-void findNeighbourDistances(ASTContext &Ctx, const Diagnoser &D, Model &M) {
-  M.Distances.clear();
-  Functions Finder(Ctx, D, M);
+std::vector<DistanceUse> findNeighbourDistances(ASTContext &Ctx, const Diagnoser &D) {
+  std::vector<DistanceUse> Found;
+  Functions Finder(Ctx, D, Found);
   Finder.TraverseDecl(Ctx.getTranslationUnitDecl());
+  return Found;
 }
 
 } // namespace wash::tr

@@ -1,5 +1,6 @@
 //===- FindHoistable.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/FindHoistable.h"
+#include "wash/translator/Frontend/PureFunctions.h"
 #include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/ParentMapContext.h"
@@ -28,31 +29,9 @@ std::string globalName(const NamedDecl *ND) {
   return "::" + Name;
 }
 
-bool isArithmetic(QualType T) {
-  return !T.isNull() && T.getNonReferenceType()->isArithmeticType() &&
-         !T.getNonReferenceType()->isEnumeralType();
-}
-
 bool isDouble(QualType T) {
   return !T.isNull() && T.getCanonicalType().getUnqualifiedType()->isSpecificBuiltinType(
                             BuiltinType::Double);
-}
-
-/// <cmath> functions without side effects that matter to a value.
-bool isMathFunction(const FunctionDecl *FD, const SourceManager &SM) {
-  static const std::set<std::string> Names = {
-      "sqrt",  "cbrt",  "pow",  "exp",  "exp2", "expm1", "log",      "log2",  "log10",
-      "log1p", "fabs",  "abs",  "sin",  "cos",  "tan",   "asin",     "acos",  "atan",
-      "atan2", "sinh",  "cosh", "tanh", "hypot", "floor", "ceil",    "trunc", "round",
-      "fmin",  "fmax",  "fma",  "copysign", "min", "max"};
-  if (!FD->getIdentifier() || !Names.count(FD->getName().str()) ||
-      !SM.isInSystemHeader(SM.getExpansionLoc(FD->getLocation())))
-    return false;
-  const DeclContext *DC = FD->getDeclContext()->getRedeclContext();
-  if (DC->isTranslationUnit())
-    return true;
-  const auto *NS = dyn_cast<NamespaceDecl>(DC);
-  return NS && NS->getName() == "std" && NS->getParent()->getRedeclContext()->isTranslationUnit();
 }
 
 /// Who calls whom among the user's functions, and which functions some code
@@ -60,10 +39,11 @@ bool isMathFunction(const FunctionDecl *FD, const SourceManager &SM) {
 /// lambda, an initialiser, a function whose address is taken).
 class CallGraph : public RecursiveASTVisitor<CallGraph> {
 public:
-  CallGraph(ASTContext &Ctx, const AstRefs &Refs, const Model &M) : Ctx(Ctx) {
-    for (unsigned K = 0; K < M.Kernels.size(); ++K)
+  CallGraph(ASTContext &Ctx, const AstRefs &Refs, const std::vector<Kernel> &Kernels)
+      : Ctx(Ctx) {
+    for (unsigned K = 0; K < Kernels.size(); ++K)
       if (K < Refs.Kernels.size() && Refs.Kernels[K])
-        (M.Kernels[K].Kind == KernelKind::Force ? ForceKernels : OtherRoots)
+        (Kernels[K].Kind == KernelKind::Force ? ForceKernels : OtherRoots)
             .insert(canonical(Refs.Kernels[K]));
     if (Refs.Main)
       OtherRoots.insert(canonical(Refs.Main));
@@ -192,143 +172,6 @@ private:
   std::map<const FunctionDecl *, std::vector<unsigned>> ReachedBy;
   std::set<const Expr *> CalleeRefs;
   std::vector<const DeclRefExpr *> FunctionRefs;
-};
-
-/// Whether a function's value depends only on its arguments and constants:
-/// a body that writes only its own locals, reads no mutable global, calls
-/// only such functions, has no loops (it runs for rows whose values the
-/// kernel would never use) and nothing undefined on odd values.
-class Purity {
-public:
-  explicit Purity(const SourceManager &SM) : SM(SM) {}
-
-  bool pure(const FunctionDecl *FD) {
-    if (!FD)
-      return false;
-    if (isMathFunction(FD, SM))
-      return true;
-    FD = FD->getDefinition();
-    if (!FD || isa<CXXMethodDecl>(FD) || FD->isVariadic() || isWashFunction(FD) ||
-        SM.isInSystemHeader(SM.getExpansionLoc(FD->getLocation())))
-      return false;
-    auto [It, New] = Known.try_emplace(FD, false); // false while in progress: no recursion
-    if (!New)
-      return It->second;
-    bool Result = isArithmetic(FD->getReturnType()) && !FD->getReturnType()->isReferenceType();
-    for (const ParmVarDecl *P : FD->parameters())
-      Result = Result && parameterReadOnly(P->getType());
-    Result = Result && stmt(FD->getBody(), FD);
-    Known[FD] = Result;
-    return Result;
-  }
-
-  /// By value, or a const reference.
-  static bool parameterReadOnly(QualType T) {
-    return !T->isReferenceType() || T.getNonReferenceType().isConstQualified();
-  }
-
-private:
-  bool stmt(const Stmt *S, const FunctionDecl *F) {
-    if (!S)
-      return true;
-    if (isa<CompoundStmt, ReturnStmt, IfStmt, NullStmt, ParenExpr, ConditionalOperator,
-            IntegerLiteral, FloatingLiteral, CXXBoolLiteralExpr, MaterializeTemporaryExpr,
-            ConstantExpr, ExprWithCleanups>(S)) {
-      // fall through to the children
-    } else if (const auto *DS = dyn_cast<DeclStmt>(S)) {
-      for (const Decl *D : DS->decls()) {
-        const auto *V = dyn_cast<VarDecl>(D);
-        if (!V || !V->hasLocalStorage() || V->getType()->isReferenceType() ||
-            !isArithmetic(V->getType()))
-          return false;
-      }
-    } else if (const auto *Cast = dyn_cast<CastExpr>(S)) {
-      if (Cast->getCastKind() == CK_FloatingToIntegral || !castable(Cast))
-        return false;
-    } else if (const auto *Bin = dyn_cast<BinaryOperator>(S)) {
-      if (!binaryAllowed(Bin) || (Bin->isAssignmentOp() && !writesLocal(Bin->getLHS(), F)))
-        return false;
-    } else if (const auto *Un = dyn_cast<UnaryOperator>(S)) {
-      if (Un->getOpcode() == UO_AddrOf || Un->getOpcode() == UO_Deref ||
-          (Un->isIncrementDecrementOp() && !writesLocal(Un->getSubExpr(), F)))
-        return false;
-    } else if (const auto *Ref = dyn_cast<DeclRefExpr>(S)) {
-      if (!readable(Ref->getDecl(), F))
-        return false;
-    } else if (const auto *Member = dyn_cast<MemberExpr>(S)) {
-      const auto *Field = dyn_cast<FieldDecl>(Member->getMemberDecl());
-      if (Member->isArrow() || !Field || Field->isMutable())
-        return false;
-    } else if (const auto *Call = dyn_cast<CallExpr>(S)) {
-      if (isa<CXXMemberCallExpr, CXXOperatorCallExpr>(Call) || !pure(Call->getDirectCallee()))
-        return false;
-      for (const Expr *Arg : Call->arguments()) // the callee is pure: skip its name
-        if (!stmt(Arg, F))
-          return false;
-      return true;
-    } else {
-      return false; // loops, throw, new, asm, lambdas, member calls, ...
-    }
-    for (const Stmt *Child : S->children())
-      if (!stmt(Child, F))
-        return false;
-    return true;
-  }
-
-  static bool castable(const CastExpr *Cast) {
-    switch (Cast->getCastKind()) {
-    case CK_LValueToRValue:
-    case CK_NoOp:
-    case CK_IntegralCast:
-    case CK_IntegralToFloating:
-    case CK_FloatingCast:
-    case CK_IntegralToBoolean:
-    case CK_FloatingToBoolean:
-    case CK_FunctionToPointerDecay:
-      return true;
-    default:
-      return false;
-    }
-  }
-
-  bool readable(const ValueDecl *D, const FunctionDecl *F) const {
-    if (isa<EnumConstantDecl>(D) || isa<FunctionDecl>(D))
-      return true;
-    const auto *V = dyn_cast<VarDecl>(D);
-    if (!V)
-      return false;
-    if (V->hasLocalStorage()) // its own parameters and locals
-      return V->getDeclContext() == F;
-    QualType T = V->getType();
-    return V->isFileVarDecl() && T.isConstQualified() && !T.isVolatileQualified() &&
-           !T->isReferenceType();
-  }
-
-  static bool writesLocal(const Expr *E, const FunctionDecl *F) {
-    const auto *Ref = dyn_cast<DeclRefExpr>(E->IgnoreParens());
-    const auto *V = Ref ? dyn_cast<VarDecl>(Ref->getDecl()) : nullptr;
-    return V && V->hasLocalStorage() && V->getDeclContext() == F &&
-           !V->getType()->isReferenceType();
-  }
-
-  const SourceManager &SM;
-  std::map<const FunctionDecl *, bool> Known;
-
-public:
-  /// Integer division, remainders and shifts can be undefined on values the
-  /// kernel would never use; comma and pointer arithmetic are not values.
-  static bool binaryAllowed(const BinaryOperator *Bin) {
-    BinaryOperatorKind Op = Bin->getOpcode();
-    if (Op == BO_Comma || Bin->isShiftOp() || Bin->isShiftAssignOp() || Op == BO_PtrMemD ||
-        Op == BO_PtrMemI)
-      return false;
-    if ((Op == BO_Div || Op == BO_Rem || Op == BO_DivAssign || Op == BO_RemAssign) &&
-        !Bin->getType()->isRealFloatingType() &&
-        !(Bin->isCompoundAssignmentOp() &&
-          cast<CompoundAssignOperator>(Bin)->getComputationResultType()->isRealFloatingType()))
-      return false;
-    return isArithmetic(Bin->getLHS()->getType()) && isArithmetic(Bin->getRHS()->getType());
-  }
 };
 
 /// The text of an expression over one neighbour, for any row: what
@@ -571,8 +414,10 @@ private:
 class FunctionScan : public RecursiveASTVisitor<FunctionScan> {
 public:
   FunctionScan(ASTContext &Ctx, const Diagnoser &D, const FunctionDecl *F,
-               std::vector<unsigned> Kernels, CallGraph &Graph, Purity &Pure, Model &M)
-      : Ctx(Ctx), D(D), F(F), Kernels(std::move(Kernels)), Graph(Graph), Pure(Pure), M(M) {}
+               std::vector<unsigned> Kernels, CallGraph &Graph, Purity &Pure,
+               std::vector<HoistedExpr> &Found)
+      : Ctx(Ctx), D(D), F(F), Kernels(std::move(Kernels)), Graph(Graph), Pure(Pure),
+        Found(Found) {}
 
   void run() {
     struct Loops : RecursiveASTVisitor<Loops> {
@@ -617,7 +462,7 @@ public:
     H.Compute = std::move(P.Pieces);
     H.Reads = std::move(P.Reads);
     H.Kernels = Kernels;
-    M.Hoisted.push_back(std::move(H));
+    Found.push_back(std::move(H));
     return true; // the largest only
   }
 
@@ -639,15 +484,16 @@ private:
   std::vector<unsigned> Kernels;
   CallGraph &Graph;
   Purity &Pure;
-  Model &M;
+  std::vector<HoistedExpr> &Found;
   std::set<const VarDecl *> LoopVars;
 };
 
 } // namespace
 
-void findHoistable(ASTContext &Ctx, const Diagnoser &D, const AstRefs &Refs, Model &M) {
-  M.Hoisted.clear();
-  CallGraph Graph(Ctx, Refs, M);
+std::vector<HoistedExpr> findHoistable(ASTContext &Ctx, const Diagnoser &D, const AstRefs &Refs,
+                                       const std::vector<Kernel> &Kernels) {
+  std::vector<HoistedExpr> Found;
+  CallGraph Graph(Ctx, Refs, Kernels);
   Graph.TraverseDecl(Ctx.getTranslationUnitDecl());
   Graph.close(Refs.Kernels);
   Purity Pure(Ctx.getSourceManager());
@@ -666,12 +512,13 @@ void findHoistable(ASTContext &Ctx, const Diagnoser &D, const AstRefs &Refs, Mod
   } Finder(Ctx.getSourceManager());
   Finder.TraverseDecl(Ctx.getTranslationUnitDecl());
   for (const FunctionDecl *F : Finder.All) {
-    std::vector<unsigned> Kernels = Graph.kernelsReaching(F);
-    if (Kernels.empty() || F->getLocation().isMacroID())
+    std::vector<unsigned> Reaching = Graph.kernelsReaching(F);
+    if (Reaching.empty() || F->getLocation().isMacroID())
       continue;
-    FunctionScan Scan(Ctx, D, F, std::move(Kernels), Graph, Pure, M);
+    FunctionScan Scan(Ctx, D, F, std::move(Reaching), Graph, Pure, Found);
     Scan.run();
   }
+  return Found;
 }
 
 } // namespace wash::tr

@@ -7,6 +7,8 @@
 #include "clang/AST/ASTContext.h"
 #include "llvm/ADT/StringRef.h"
 
+#include <optional>
+
 namespace wash::tr {
 
 /// Before parsing: the dimension the source's vector types suggest (the
@@ -14,9 +16,9 @@ namespace wash::tr {
 /// or 2. The header needs WASH_DIM to match, so the driver defines it.
 unsigned guessDimension(llvm::StringRef Source);
 
-/// After parsing: sets Model::Sim.Dimension from the vector types the user's
-/// code spells (ParsedDim, the WASH_DIM it was parsed with, if it spells
-/// none). Mixing 2D and 3D vectors is an error. Returns false on error.
-bool detectDimension(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim, Model &M);
+/// After parsing: the dimension (Model::Sim.Dimension) the vector types the
+/// user's code spells say (ParsedDim, the WASH_DIM it was parsed with, if it
+/// spells none). Mixing 2D and 3D vectors is an error: nullopt.
+std::optional<unsigned> detectDimension(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim);
 
 } // namespace wash::tr

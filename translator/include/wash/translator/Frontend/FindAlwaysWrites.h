@@ -16,7 +16,9 @@
 
 namespace wash::tr {
 
-/// Fills Kernel::AlwaysWrites of every update and force kernel.
-void findAlwaysWrites(clang::ASTContext &Ctx, const AstRefs &Refs, Model &M);
+/// Kernel::AlwaysWrites of each of Kernels (empty but for update and force
+/// kernels); Refs.Kernels are their definitions.
+std::vector<FieldSet> findAlwaysWrites(clang::ASTContext &Ctx, const AstRefs &Refs,
+                                       const std::vector<Kernel> &Kernels);
 
 } // namespace wash::tr

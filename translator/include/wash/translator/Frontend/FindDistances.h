@@ -21,7 +21,7 @@
 
 namespace wash::tr {
 
-/// Fills Model::Distances with every such magnitude in the user's functions.
-void findNeighbourDistances(clang::ASTContext &Ctx, const Diagnoser &D, Model &M);
+/// Every such magnitude in the user's functions (Model::Distances).
+std::vector<DistanceUse> findNeighbourDistances(clang::ASTContext &Ctx, const Diagnoser &D);
 
 } // namespace wash::tr

@@ -25,8 +25,9 @@
 
 namespace wash::tr {
 
-/// Fills Model::Hoisted with every such expression (needs collectSimulation
-/// for the kernels).
-void findHoistable(clang::ASTContext &Ctx, const Diagnoser &D, const AstRefs &Refs, Model &M);
+/// Every such expression (Model::Hoisted), in source order; Kernels and
+/// Refs.Kernels are collectSimulation's.
+std::vector<HoistedExpr> findHoistable(clang::ASTContext &Ctx, const Diagnoser &D,
+                                       const AstRefs &Refs, const std::vector<Kernel> &Kernels);
 
 } // namespace wash::tr
