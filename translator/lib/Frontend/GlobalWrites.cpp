@@ -159,6 +159,35 @@ bool isShallow(const FunctionDecl *FD) {
          !R->getPointeeType().isConstQualified();
 }
 
+/// The class of `this` when E, a write's target, goes through a reference
+/// or pointer one of `this`'s members holds (`into = 1` for a reference
+/// member, `*slot = 1`): the object then writes where it was pointed.
+const CXXRecordDecl *heldThroughThis(const Expr *E, bool Through = false, unsigned Depth = 0) {
+  E = strip(E);
+  if (!E || Depth > MaxDepth)
+    return nullptr;
+  if (const auto *M = dyn_cast<MemberExpr>(E)) {
+    QualType T = M->getMemberDecl()->getType();
+    bool ViaMember = Through || T->isReferenceType();
+    const Expr *Base = strip(M->getBase());
+    if (isa<CXXThisExpr>(Base))
+      return ViaMember && holdsMutablePointer(T) ? Base->getType()->getPointeeCXXRecordDecl()
+                                                 : nullptr;
+    return heldThroughThis(M->getBase(), ViaMember || M->isArrow(), Depth + 1);
+  }
+  if (const auto *A = dyn_cast<ArraySubscriptExpr>(E))
+    return heldThroughThis(A->getBase(), Through || !strip(A->getBase())->getType()->isArrayType(),
+                           Depth + 1);
+  if (const auto *U = dyn_cast<UnaryOperator>(E); U && U->getOpcode() == UO_Deref)
+    return heldThroughThis(U->getSubExpr(), true, Depth + 1);
+  if (const auto *OC = dyn_cast<CXXOperatorCallExpr>(E);
+      OC && OC->getNumArgs() > 0 &&
+      (OC->getOperator() == OO_Star || OC->getOperator() == OO_Subscript ||
+       OC->getOperator() == OO_Arrow))
+    return heldThroughThis(OC->getArg(0), Through || isShallow(OC->getDirectCallee()), Depth + 1);
+  return nullptr;
+}
+
 /// The arguments of CE that bind FD's parameters (a member operator's
 /// object is its first argument).
 llvm::ArrayRef<const Expr *> boundArguments(const CallExpr *CE, const FunctionDecl *FD) {
@@ -200,7 +229,7 @@ std::vector<QualType> parameterTypes(const CallExpr *CE, const FunctionDecl *FD)
 
 bool SharedStateFinder::followed(const FunctionDecl *FD) const {
   const FunctionDecl *Def = FD ? FD->getDefinition() : nullptr;
-  if (!Def || !Def->hasBody() || isWashFunction(FD) ||
+  if (!Def || !Def->hasBody() || isWashFunction(FD) || isa<CXXConstructorDecl>(FD) ||
       !isUserCode(Ctx.getSourceManager(), Def))
     return false;
   // A virtual call may land in an override the walk does not follow.
@@ -504,8 +533,8 @@ bool SharedStateFinder::writesThroughCallable(llvm::ArrayRef<const Expr *> Args)
 
 void SharedStateFinder::call(const Expr *Call, const FunctionDecl *FD,
                              llvm::ArrayRef<const Expr *> Args, llvm::ArrayRef<QualType> Params) {
-  if (followed(FD)) {
-    const FunctionDecl *Def = FD->getDefinition();
+  const FunctionDecl *Def = FD ? FD->getDefinition() : nullptr;
+  if (followed(FD) || Walked.count(Def)) {
     for (unsigned I = 0; I < Args.size() && I < Def->getNumParams(); ++I)
       if (const ParmVarDecl *P = Def->getParamDecl(I); WrittenParams.count(P))
         written(argumentRoots(Args[I], P->getType(), 0), Args[I], Def);
@@ -528,22 +557,60 @@ void SharedStateFinder::call(const Expr *Call, const FunctionDecl *FD,
   }
 }
 
+void SharedStateFinder::writtenTarget(const Expr *Target, const Stmt *At) {
+  if (const CXXRecordDecl *RD = heldThroughThis(Target))
+    WritesThroughHeld.insert(RD->getCanonicalDecl());
+  written(objectRoots(Target), At, nullptr);
+}
+
+/// What an object (or the object a pointer designates) holds pointers to.
+StorageRoots SharedStateFinder::heldRoots(const Expr *Object) {
+  const Expr *O = strip(Object);
+  StorageRoots R;
+  for (const StorageRoot &B : O->getType()->isPointerType() ? pointeeRoots(O) : objectRoots(O)) {
+    if (B.Var->hasGlobalStorage() || (isa<ParmVarDecl>(B.Var) && B.Through))
+      R.insert(B);
+    else
+      merge(R, aliasesOf(B.Var));
+  }
+  return R;
+}
+
+bool SharedStateFinder::writesThroughHeld(const CXXRecordDecl *RD) const {
+  return RD && WritesThroughHeld.count(RD->getCanonicalDecl());
+}
+
 void SharedStateFinder::visit(const Stmt *S) {
   if (const auto *B = dyn_cast<BinaryOperator>(S); B && B->isAssignmentOp())
-    return written(objectRoots(B->getLHS()), S, nullptr);
+    return writtenTarget(B->getLHS(), S);
   if (const auto *U = dyn_cast<UnaryOperator>(S); U && U->isIncrementDecrementOp())
-    return written(objectRoots(U->getSubExpr()), S, nullptr);
+    return writtenTarget(U->getSubExpr(), S);
   if (const auto *CE = dyn_cast<CXXConstructExpr>(S)) {
     const CXXConstructorDecl *Ctor = CE->getConstructor();
+    walk(Ctor);
     std::vector<QualType> Params;
     for (const ParmVarDecl *P : Ctor->parameters())
       Params.push_back(P->getType());
-    // Constructors are not followed: their bodies are library code or
-    // run outside the kernel's own statements.
     llvm::ArrayRef<const Expr *> Args(CE->getArgs(), CE->getNumArgs());
+    if (!writesThroughHeld(Ctor->getParent()))
+      return call(CE, Ctor, Args, Params);
+    // Its members are bound to the arguments and written through.
     for (unsigned I = 0; I < Args.size() && I < Params.size(); ++I)
       if (mayWriteThrough(Params[I]))
         written(argumentRoots(Args[I], Params[I], 0), Args[I], Ctor);
+    return;
+  }
+  if (const auto *BT = dyn_cast<CXXBindTemporaryExpr>(S))
+    return walk(BT->getTemporary()->getDestructor());
+  if (const auto *DS = dyn_cast<DeclStmt>(S)) {
+    for (const Decl *Dcl : DS->decls())
+      if (const auto *VD = dyn_cast<VarDecl>(Dcl); VD && !VD->hasGlobalStorage())
+        if (const CXXRecordDecl *RD = VD->getType()->getAsCXXRecordDecl();
+            RD && RD->hasDefinition() && RD->getDestructor()) {
+          walk(RD->getDestructor());
+          if (writesThroughHeld(RD))
+            written(aliasesOf(VD), DS, RD->getDestructor());
+        }
     return;
   }
   const auto *CE = dyn_cast<CallExpr>(S);
@@ -556,10 +623,39 @@ void SharedStateFinder::visit(const Stmt *S) {
     const auto *MD = dyn_cast_or_null<CXXMethodDecl>(FD);
     bool Accessor = MD && !followed(MD) && isLibraryAccessor(MD);
     if (MD && !MD->isConst() && !MD->isStatic() && !Accessor)
-      written(objectRoots(Object), S, nullptr);
+      writtenTarget(Object, S);
+    if (MD && !MD->isStatic() && writesThroughHeld(MD->getParent()))
+      written(heldRoots(Object), S, MD);
   }
   std::vector<QualType> Params = parameterTypes(CE, FD);
   call(CE, FD, boundArguments(CE, FD), Params);
+}
+
+/// Constructors and destructors the kernel walk does not enter: walked
+/// here, children first, into the user functions they call.
+void SharedStateFinder::walk(const FunctionDecl *FD) {
+  const FunctionDecl *Def = FD ? FD->getDefinition() : nullptr;
+  if (!Def || !Def->hasBody() || !isUserCode(Ctx.getSourceManager(), Def) ||
+      !Walked.insert(Def).second)
+    return;
+  std::function<void(const Stmt *)> Walk = [&](const Stmt *S) {
+    if (!S)
+      return;
+    if (const auto *L = dyn_cast<LambdaExpr>(S)) {
+      for (const Expr *Init : L->capture_inits())
+        Walk(Init);
+      return; // Walked where it is called.
+    }
+    for (const Stmt *Child : S->children())
+      Walk(Child);
+    if (const auto *CE = dyn_cast<CallExpr>(S); CE && followed(CE->getDirectCallee()))
+      walk(CE->getDirectCallee());
+    visit(S);
+  };
+  if (const auto *Ctor = dyn_cast<CXXConstructorDecl>(Def))
+    for (const CXXCtorInitializer *Init : Ctor->inits())
+      Walk(Init->getInit());
+  Walk(Def->getBody());
 }
 
 bool allowsSharedState(const FunctionDecl *Kernel) {

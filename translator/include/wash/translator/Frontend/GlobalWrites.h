@@ -15,6 +15,7 @@
 
 #include "clang/AST/ASTContext.h"
 #include "clang/AST/Decl.h"
+#include "clang/AST/DeclCXX.h"
 #include "clang/AST/Stmt.h"
 
 #include <functional>
@@ -61,6 +62,10 @@ private:
   void call(const clang::Expr *Call, const clang::FunctionDecl *FD,
             llvm::ArrayRef<const clang::Expr *> Args, llvm::ArrayRef<clang::QualType> Params);
   bool followed(const clang::FunctionDecl *FD) const;
+  void walk(const clang::FunctionDecl *FD);
+  void writtenTarget(const clang::Expr *Target, const clang::Stmt *At);
+  StorageRoots heldRoots(const clang::Expr *Object);
+  bool writesThroughHeld(const clang::CXXRecordDecl *RD) const;
   bool writesThroughCallable(llvm::ArrayRef<const clang::Expr *> Args) const;
 
   clang::ASTContext &Ctx;
@@ -74,6 +79,11 @@ private:
   /// pointer into.
   std::map<const clang::FunctionDecl *, StorageRoots> Returns;
   std::set<const clang::FunctionDecl *> Scanned;
+  /// Classes some member of which writes through a reference or pointer
+  /// the object holds.
+  std::set<const clang::CXXRecordDecl *> WritesThroughHeld;
+  /// Constructors and destructors (and what they call) walked here.
+  std::set<const clang::FunctionDecl *> Walked;
 };
 
 /// The kernel opts out of the shared-state errors: its body calls
