@@ -4,6 +4,8 @@
 // RUN: %expect_exit 1 %wash --backend=serial -o %t %s 2>&1 | FileCheck %s --implicit-check-not=error:
 // RUN: test ! -e %t
 #include <wash/wash.hpp>
+#include <functional>
+#include <utility>
 #include <vector>
 
 double G = 0;
@@ -50,8 +52,27 @@ void Chain(wash::Particle &p, const std::vector<wash::Particle> &) {
   n->value = 2;
 }
 
+std::pair<double, double> Range;
+void Indirect(wash::Particle &p) {
+  auto &[low, high] = Range;
+  // CHECK: global-write-through-alias.cpp:[[@LINE+1]]:3: error: update kernel 'Indirect' writes 'Range'
+  low = p.get_mass();
+  std::vector<double *> slots{&G};
+  // CHECK: global-write-through-alias.cpp:[[@LINE+1]]:3: error: update kernel 'Indirect' writes 'G'
+  *slots[0] = 1;
+  double *q = nullptr;
+  double **qq = &q;
+  *qq = &G;
+  // CHECK: global-write-through-alias.cpp:[[@LINE+1]]:3: error: update kernel 'Indirect' writes 'G'
+  *q = 5;
+  std::reference_wrapper<double> r = std::ref(G);
+  // CHECK: global-write-through-alias.cpp:[[@LINE+1]]:3: error: update kernel 'Indirect' writes 'G'
+  r.get() = high;
+}
+
 int main() {
   wash::add_update_kernel(&Alias);
   wash::add_force_kernel(&Chain);
+  wash::add_update_kernel(&Indirect);
   wash::start();
 }

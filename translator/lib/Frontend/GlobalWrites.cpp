@@ -33,6 +33,8 @@ const Expr *strip(const Expr *E) {
       Next = F->getSubExpr();
     else if (const auto *D = dyn_cast<CXXDefaultArgExpr>(Next))
       Next = D->getExpr();
+    else if (const auto *IL = dyn_cast<CXXStdInitializerListExpr>(Next))
+      Next = IL->getSubExpr(); // The array the list's elements live in.
     if (Next == E)
       return E;
     E = Next;
@@ -188,6 +190,11 @@ const CXXRecordDecl *heldThroughThis(const Expr *E, bool Through = false, unsign
   return nullptr;
 }
 
+/// The callee's name, for a diagnostic.
+std::string nameOf(const FunctionDecl *FD) {
+  return FD ? FD->getQualifiedNameAsString() : "a function called through a pointer";
+}
+
 /// The arguments of CE that bind FD's parameters (a member operator's
 /// object is its first argument).
 llvm::ArrayRef<const Expr *> boundArguments(const CallExpr *CE, const FunctionDecl *FD) {
@@ -301,6 +308,16 @@ StorageRoots SharedStateFinder::pointeeRoots(const Expr *E, unsigned Depth) {
   E = strip(E);
   if (!E || Depth > MaxDepth)
     return {};
+  // An aggregate or an initializer_list's array: what its elements hold.
+  if (const auto *IL = dyn_cast<InitListExpr>(E)) {
+    StorageRoots R;
+    for (const Expr *Init : IL->inits()) {
+      merge(R, pointeeRoots(Init, Depth + 1));
+      if (Init->isGLValue()) // A reference member bound to it.
+        merge(R, objectRoots(Init, Depth + 1));
+    }
+    return R;
+  }
   if (E->getType()->isArrayType()) // Decayed to a pointer to its first element.
     return objectRoots(E, Depth + 1);
   if (const auto *U = dyn_cast<UnaryOperator>(E)) {
@@ -325,8 +342,8 @@ StorageRoots SharedStateFinder::pointeeRoots(const Expr *E, unsigned Depth) {
     merge(R, pointeeRoots(C->getFalseExpr(), Depth + 1));
     return R;
   }
-  if (isa<CallExpr>(E))
-    return callRoots(E, Depth + 1);
+  if (isa<CallExpr>(E)) // A reference returned is read from; an iterator is what it points into.
+    return E->isGLValue() ? loadRoots(E, Depth + 1) : callRoots(E, Depth + 1);
   if (const auto *CE = dyn_cast<CXXConstructExpr>(E)) {
     const CXXConstructorDecl *Ctor = CE->getConstructor();
     // A copy points where the original does, unless it copies deeply.
@@ -335,15 +352,6 @@ StorageRoots SharedStateFinder::pointeeRoots(const Expr *E, unsigned Depth) {
     StorageRoots R;
     for (unsigned I = 0; I < CE->getNumArgs() && I < Ctor->getNumParams(); ++I)
       merge(R, argumentRoots(CE->getArg(I), Ctor->getParamDecl(I)->getType(), Depth + 1));
-    return R;
-  }
-  if (const auto *IL = dyn_cast<InitListExpr>(E)) {
-    StorageRoots R;
-    for (const Expr *Init : IL->inits()) {
-      merge(R, pointeeRoots(Init, Depth + 1));
-      if (Init->isGLValue()) // A reference member bound to it.
-        merge(R, objectRoots(Init, Depth + 1));
-    }
     return R;
   }
   if (E->isGLValue())
@@ -492,7 +500,7 @@ void SharedStateFinder::scanFunction(const FunctionDecl *FD) {
 /// Roots a statement writes: globals are reported, parameters remembered
 /// for the calls that bind them.
 void SharedStateFinder::written(const StorageRoots &Roots, const Stmt *At,
-                                const FunctionDecl *Callee) {
+                                std::optional<std::string> Callee) {
   std::set<const VarDecl *> Reported;
   for (const StorageRoot &R : Roots) {
     if (const auto *P = dyn_cast<ParmVarDecl>(R.Var); P && R.Through) {
@@ -504,8 +512,7 @@ void SharedStateFinder::written(const StorageRoots &Roots, const Stmt *At,
       continue;
     std::string Name = R.Var->getQualifiedNameAsString();
     if (Callee)
-      D.report(DiagId::GlobalPassedToWriter, At->getBeginLoc(),
-               {KernelKind, Kernel, Name, Callee->getQualifiedNameAsString()});
+      D.report(DiagId::GlobalPassedToWriter, At->getBeginLoc(), {KernelKind, Kernel, Name, *Callee});
     else
       D.report(DiagId::GlobalWriteInParticleKernel, At->getBeginLoc(), {KernelKind, Kernel, Name});
     D.report(DiagId::NoteSharedStateOptIn, At->getBeginLoc(), {Kernel});
@@ -537,7 +544,7 @@ void SharedStateFinder::call(const Expr *Call, const FunctionDecl *FD,
   if (followed(FD) || Walked.count(Def)) {
     for (unsigned I = 0; I < Args.size() && I < Def->getNumParams(); ++I)
       if (const ParmVarDecl *P = Def->getParamDecl(I); WrittenParams.count(P))
-        written(argumentRoots(Args[I], P->getType(), 0), Args[I], Def);
+        written(argumentRoots(Args[I], P->getType(), 0), Args[I], nameOf(Def));
     return;
   }
   if (FD && changesHiddenState(FD)) {
@@ -553,14 +560,14 @@ void SharedStateFinder::call(const Expr *Call, const FunctionDecl *FD,
     if (Variadic ? !holdsMutablePointer(Args[I]->getType()) : !mayWriteThrough(Params[I]))
       continue;
     StorageRoots R = Variadic ? pointeeRoots(Args[I]) : argumentRoots(Args[I], Params[I], 0);
-    written(R, Args[I], FD);
+    written(R, Args[I], nameOf(FD));
   }
 }
 
 void SharedStateFinder::writtenTarget(const Expr *Target, const Stmt *At) {
   if (const CXXRecordDecl *RD = heldThroughThis(Target))
     WritesThroughHeld.insert(RD->getCanonicalDecl());
-  written(objectRoots(Target), At, nullptr);
+  written(objectRoots(Target), At, std::nullopt);
 }
 
 /// What an object (or the object a pointer designates) holds pointers to.
@@ -597,7 +604,7 @@ void SharedStateFinder::visit(const Stmt *S) {
     // Its members are bound to the arguments and written through.
     for (unsigned I = 0; I < Args.size() && I < Params.size(); ++I)
       if (mayWriteThrough(Params[I]))
-        written(argumentRoots(Args[I], Params[I], 0), Args[I], Ctor);
+        written(argumentRoots(Args[I], Params[I], 0), Args[I], nameOf(Ctor));
     return;
   }
   if (const auto *BT = dyn_cast<CXXBindTemporaryExpr>(S))
@@ -609,7 +616,7 @@ void SharedStateFinder::visit(const Stmt *S) {
             RD && RD->hasDefinition() && RD->getDestructor()) {
           walk(RD->getDestructor());
           if (writesThroughHeld(RD))
-            written(aliasesOf(VD), DS, RD->getDestructor());
+            written(aliasesOf(VD), DS, nameOf(RD->getDestructor()));
         }
     return;
   }
@@ -625,7 +632,7 @@ void SharedStateFinder::visit(const Stmt *S) {
     if (MD && !MD->isConst() && !MD->isStatic() && !Accessor)
       writtenTarget(Object, S);
     if (MD && !MD->isStatic() && writesThroughHeld(MD->getParent()))
-      written(heldRoots(Object), S, MD);
+      written(heldRoots(Object), S, nameOf(MD));
   }
   std::vector<QualType> Params = parameterTypes(CE, FD);
   call(CE, FD, boundArguments(CE, FD), Params);

@@ -20,6 +20,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -58,7 +59,9 @@ private:
   StorageRoots argumentRoots(const clang::Expr *Arg, clang::QualType Param, unsigned Depth);
   const StorageRoots &aliasesOf(const clang::VarDecl *Local);
   void scanFunction(const clang::FunctionDecl *FD);
-  void written(const StorageRoots &Roots, const clang::Stmt *At, const clang::FunctionDecl *Callee);
+  /// Callee: the function the roots were passed to; none for a write.
+  void written(const StorageRoots &Roots, const clang::Stmt *At,
+               std::optional<std::string> Callee);
   void call(const clang::Expr *Call, const clang::FunctionDecl *FD,
             llvm::ArrayRef<const clang::Expr *> Args, llvm::ArrayRef<clang::QualType> Params);
   bool followed(const clang::FunctionDecl *FD) const;
