@@ -108,11 +108,24 @@ bool isLibraryAccessor(const FunctionDecl *FD) {
   switch (FD->getOverloadedOperator()) {
   case OO_None:
     break;
-  case OO_Subscript: case OO_Star: case OO_Arrow: // Access.
-  case OO_EqualEqual: case OO_ExclaimEqual: case OO_Less: case OO_Greater:
-  case OO_LessEqual: case OO_GreaterEqual: case OO_Spaceship: // Comparison.
-  case OO_Plus: case OO_Minus: case OO_Slash: case OO_Percent: case OO_Exclaim:
-  case OO_Tilde: case OO_AmpAmp: case OO_PipePipe: // Arithmetic: a new value.
+  case OO_Subscript:
+  case OO_Star:
+  case OO_Arrow: // Access.
+  case OO_EqualEqual:
+  case OO_ExclaimEqual:
+  case OO_Less:
+  case OO_Greater:
+  case OO_LessEqual:
+  case OO_GreaterEqual:
+  case OO_Spaceship: // Comparison.
+  case OO_Plus:
+  case OO_Minus:
+  case OO_Slash:
+  case OO_Percent:
+  case OO_Exclaim:
+  case OO_Tilde:
+  case OO_AmpAmp:
+  case OO_PipePipe: // Arithmetic: a new value.
     return true;
   default:
     return false;
@@ -120,17 +133,20 @@ bool isLibraryAccessor(const FunctionDecl *FD) {
   if (!FD->getIdentifier())
     return isa<CXXConversionDecl>(FD);
   if (isOneOf(FD->getName(),
-              {"begin", "end", "cbegin", "cend", "rbegin", "rend", "crbegin", "crend", "data",
-               "size", "empty", "front", "back", "at", "find", "count", "contains", "lower_bound",
-               "upper_bound", "equal_range", "get", "value", "addressof", "ref", "cref",
-               "as_const", "next", "prev", "distance", "base"}))
+              {"begin",       "end",         "cbegin", "cend",  "rbegin",    "rend",
+               "crbegin",     "crend",       "data",   "size",  "empty",     "front",
+               "back",        "at",          "find",   "count", "contains",  "lower_bound",
+               "upper_bound", "equal_range", "get",    "value", "addressof", "ref",
+               "cref",        "as_const",    "next",   "prev",  "distance",  "base"}))
     return true;
   return FD->isInStdNamespace() &&
          isOneOf(FD->getName(),
-                 {"accumulate", "reduce", "inner_product", "transform_reduce", "count_if",
-                  "find_if", "find_if_not", "all_of", "any_of", "none_of", "max_element",
-                  "min_element", "minmax_element", "equal", "mismatch", "lexicographical_compare",
-                  "binary_search", "is_sorted", "search", "adjacent_find", "includes"});
+                 {"accumulate",     "reduce",    "inner_product", "transform_reduce",
+                  "count_if",       "find_if",   "find_if_not",   "all_of",
+                  "any_of",         "none_of",   "max_element",   "min_element",
+                  "minmax_element", "equal",     "mismatch",      "lexicographical_compare",
+                  "binary_search",  "is_sorted", "search",        "adjacent_find",
+                  "includes"});
 }
 
 /// Library functions that change state the program cannot see: the C
@@ -144,9 +160,9 @@ bool changesHiddenState(const FunctionDecl *FD) {
   if (!FD->getIdentifier() || !(FD->isExternC() || FD->isInStdNamespace() ||
                                 FD->getDeclContext()->getRedeclContext()->isTranslationUnit()))
     return false;
-  return isOneOf(FD->getName(), {"rand", "srand", "random", "srandom", "drand48", "lrand48",
-                                 "mrand48", "srand48", "seed48", "lcong48", "random_shuffle",
-                                 "strtok"});
+  return isOneOf(FD->getName(),
+                 {"rand", "srand", "random", "srandom", "drand48", "lrand48", "mrand48", "srand48",
+                  "seed48", "lcong48", "random_shuffle", "strtok"});
 }
 
 /// A const member returning a non-const reference or pointer: the object
@@ -241,7 +257,8 @@ bool SharedStateFinder::followed(const FunctionDecl *FD) const {
     return false;
   // A virtual call may land in an override the walk does not follow.
   const auto *MD = dyn_cast<CXXMethodDecl>(FD);
-  return !MD || !MD->isVirtual() || MD->hasAttr<FinalAttr>() || MD->getParent()->hasAttr<FinalAttr>();
+  return !MD || !MD->isVirtual() || MD->hasAttr<FinalAttr>() ||
+         MD->getParent()->hasAttr<FinalAttr>();
 }
 
 /// Where the storage the glvalue E designates lies.
@@ -512,7 +529,8 @@ void SharedStateFinder::written(const StorageRoots &Roots, const Stmt *At,
       continue;
     std::string Name = R.Var->getQualifiedNameAsString();
     if (Callee)
-      D.report(DiagId::GlobalPassedToWriter, At->getBeginLoc(), {KernelKind, Kernel, Name, *Callee});
+      D.report(DiagId::GlobalPassedToWriter, At->getBeginLoc(),
+               {KernelKind, Kernel, Name, *Callee});
     else
       D.report(DiagId::GlobalWriteInParticleKernel, At->getBeginLoc(), {KernelKind, Kernel, Name});
     D.report(DiagId::NoteSharedStateOptIn, At->getBeginLoc(), {Kernel});

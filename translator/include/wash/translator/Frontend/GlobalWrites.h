@@ -60,8 +60,7 @@ private:
   const StorageRoots &aliasesOf(const clang::VarDecl *Local);
   void scanFunction(const clang::FunctionDecl *FD);
   /// Callee: the function the roots were passed to; none for a write.
-  void written(const StorageRoots &Roots, const clang::Stmt *At,
-               std::optional<std::string> Callee);
+  void written(const StorageRoots &Roots, const clang::Stmt *At, std::optional<std::string> Callee);
   void call(const clang::Expr *Call, const clang::FunctionDecl *FD,
             llvm::ArrayRef<const clang::Expr *> Args, llvm::ArrayRef<clang::QualType> Params);
   bool followed(const clang::FunctionDecl *FD) const;
