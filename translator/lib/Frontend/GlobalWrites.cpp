@@ -1,6 +1,7 @@
 //===- GlobalWrites.cpp ---------------------------------------------------===//
 #include "wash/translator/Frontend/GlobalWrites.h"
 #include "wash/translator/Frontend/WashApi.h"
+#include "wash/translator/Frontend/WriteAccess.h"
 
 #include "clang/AST/Attr.h"
 #include "clang/AST/DeclCXX.h"
@@ -40,141 +41,6 @@ const Expr *strip(const Expr *E) {
     E = Next;
   }
   return E;
-}
-
-/// A value of type T can change storage it does not own: a pointer or
-/// reference to non-const, or a class holding one (an iterator, a span, a
-/// std::reference_wrapper).
-bool holdsMutablePointer(QualType T, unsigned Depth = 0) {
-  if (Depth > 4 || T.isNull())
-    return false;
-  if (T->isPointerType() || T->isReferenceType())
-    return !T->getPointeeType().isConstQualified();
-  if (const auto *A = T->getAsArrayTypeUnsafe())
-    return holdsMutablePointer(A->getElementType(), Depth + 1);
-  const auto *RD = T->getAsCXXRecordDecl();
-  if (!RD || !RD->hasDefinition())
-    return false;
-  for (const FieldDecl *F : RD->fields())
-    if (holdsMutablePointer(F->getType(), Depth + 1))
-      return true;
-  for (const CXXBaseSpecifier &B : RD->bases())
-    if (holdsMutablePointer(B.getType(), Depth + 1))
-      return true;
-  return false;
-}
-
-/// A const object of type T still gives write access to what it points to:
-/// a pointer to non-const, a public pointer member, or a const accessor
-/// handing out a non-const reference (an iterator, a span, a smart pointer;
-/// not a container, whose const accessors are const too).
-bool shallowWhenConst(QualType T, unsigned Depth = 0) {
-  if (T->isPointerType() || T->isReferenceType())
-    return !T->getPointeeType().isConstQualified();
-  const auto *RD = T->getAsCXXRecordDecl();
-  if (!RD || !RD->hasDefinition() || Depth > 4)
-    return false;
-  for (const FieldDecl *F : RD->fields())
-    if (F->getAccess() == AS_public && shallowWhenConst(F->getType(), Depth + 1))
-      return true;
-  for (const CXXMethodDecl *M : RD->methods()) {
-    QualType R = M->getReturnType();
-    OverloadedOperatorKind O = M->getOverloadedOperator();
-    bool Access = O == OO_Star || O == OO_Arrow || O == OO_Subscript ||
-                  (M->getIdentifier() && M->getName() == "get");
-    if (Access && M->isConst() && (R->isReferenceType() || R->isPointerType()) &&
-        !R->getPointeeType().isConstQualified())
-      return true;
-  }
-  for (const CXXBaseSpecifier &B : RD->bases())
-    if (B.getAccessSpecifier() == AS_public && shallowWhenConst(B.getType(), Depth + 1))
-      return true;
-  return false;
-}
-
-/// A parameter of type T lets the callee change what its argument designates
-/// or points to.
-bool mayWriteThrough(QualType T) {
-  if (const auto *R = T->getAs<ReferenceType>())
-    return !R->getPointeeType().isConstQualified() || shallowWhenConst(R->getPointeeType());
-  return holdsMutablePointer(T);
-}
-
-/// Library calls that hand out access to their argument or object, or only
-/// read through what they are given (the non-modifying algorithms). The
-/// results of accessors carry what they point into, so a write through them
-/// is still found.
-bool isLibraryAccessor(const FunctionDecl *FD) {
-  switch (FD->getOverloadedOperator()) {
-  case OO_None:
-    break;
-  case OO_Subscript:
-  case OO_Star:
-  case OO_Arrow: // Access.
-  case OO_EqualEqual:
-  case OO_ExclaimEqual:
-  case OO_Less:
-  case OO_Greater:
-  case OO_LessEqual:
-  case OO_GreaterEqual:
-  case OO_Spaceship: // Comparison.
-  case OO_Plus:
-  case OO_Minus:
-  case OO_Slash:
-  case OO_Percent:
-  case OO_Exclaim:
-  case OO_Tilde:
-  case OO_AmpAmp:
-  case OO_PipePipe: // Arithmetic: a new value.
-    return true;
-  default:
-    return false;
-  }
-  if (!FD->getIdentifier())
-    return isa<CXXConversionDecl>(FD);
-  if (isOneOf(FD->getName(),
-              {"begin",       "end",         "cbegin", "cend",  "rbegin",    "rend",
-               "crbegin",     "crend",       "data",   "size",  "empty",     "front",
-               "back",        "at",          "find",   "count", "contains",  "lower_bound",
-               "upper_bound", "equal_range", "get",    "value", "addressof", "ref",
-               "cref",        "as_const",    "next",   "prev",  "distance",  "base"}))
-    return true;
-  return FD->isInStdNamespace() &&
-         isOneOf(FD->getName(),
-                 {"accumulate",     "reduce",    "inner_product", "transform_reduce",
-                  "count_if",       "find_if",   "find_if_not",   "all_of",
-                  "any_of",         "none_of",   "max_element",   "min_element",
-                  "minmax_element", "equal",     "mismatch",      "lexicographical_compare",
-                  "binary_search",  "is_sorted", "search",        "adjacent_find",
-                  "includes"});
-}
-
-/// Library functions that change state the program cannot see: the C
-/// library's random generators (one hidden seed per process) and strtok.
-/// Generators the program owns (rand_r, erand48, <random> engines) pass
-/// their state explicitly and are caught as arguments instead.
-bool changesHiddenState(const FunctionDecl *FD) {
-  if (const auto *MD = dyn_cast<CXXMethodDecl>(FD))
-    return MD->getOverloadedOperator() == OO_Call && MD->getParent()->getIdentifier() &&
-           MD->getParent()->getName() == "random_device" && MD->getParent()->isInStdNamespace();
-  if (!FD->getIdentifier() || !(FD->isExternC() || FD->isInStdNamespace() ||
-                                FD->getDeclContext()->getRedeclContext()->isTranslationUnit()))
-    return false;
-  return isOneOf(FD->getName(),
-                 {"rand", "srand", "random", "srandom", "drand48", "lrand48", "mrand48", "srand48",
-                  "seed48", "lcong48", "random_shuffle", "strtok"});
-}
-
-/// A const member returning a non-const reference or pointer: the object
-/// refers to what it hands out (an iterator, a span, a smart pointer)
-/// rather than owning it (a container).
-bool isShallow(const FunctionDecl *FD) {
-  const auto *MD = dyn_cast_or_null<CXXMethodDecl>(FD);
-  if (!MD)
-    return true;
-  QualType R = MD->getReturnType();
-  return MD->isConst() && (R->isReferenceType() || R->isPointerType()) &&
-         !R->getPointeeType().isConstQualified();
 }
 
 /// The class of `this` when E, a write's target, goes through a reference
@@ -266,6 +132,15 @@ StorageRoots SharedStateFinder::objectRoots(const Expr *E, unsigned Depth) {
   E = strip(E);
   if (!E || Depth > MaxDepth)
     return {};
+  // Nested calls reach their arguments both ways: without the cache, the
+  // work would double with every level.
+  auto Key = std::make_pair(E, false);
+  if (auto It = Cache.find(Key); It != Cache.end())
+    return It->second;
+  return Cache[Key] = objectRootsOf(E, Depth);
+}
+
+StorageRoots SharedStateFinder::objectRootsOf(const Expr *E, unsigned Depth) {
   if (const auto *DRE = dyn_cast<DeclRefExpr>(E)) {
     if (const auto *B = dyn_cast<BindingDecl>(DRE->getDecl()))
       return objectRoots(B->getBinding(), Depth + 1);
@@ -325,6 +200,16 @@ StorageRoots SharedStateFinder::pointeeRoots(const Expr *E, unsigned Depth) {
   E = strip(E);
   if (!E || Depth > MaxDepth)
     return {};
+  QualType T = E->getType();
+  if (T->isArithmeticType() || T->isEnumeralType() || T->isVoidType())
+    return {}; // A number points nowhere.
+  auto Key = std::make_pair(E, true);
+  if (auto It = Cache.find(Key); It != Cache.end())
+    return It->second;
+  return Cache[Key] = pointeeRootsOf(E, Depth);
+}
+
+StorageRoots SharedStateFinder::pointeeRootsOf(const Expr *E, unsigned Depth) {
   // An aggregate or an initializer_list's array: what its elements hold.
   if (const auto *IL = dyn_cast<InitListExpr>(E)) {
     StorageRoots R;
@@ -484,6 +369,7 @@ void SharedStateFinder::scanFunction(const FunctionDecl *FD) {
   };
   Collect(Def->getBody(), false);
   for (unsigned Round = 0; Round < 8; ++Round) {
+    Cache.clear();
     bool Changed = false;
     auto Add = [&](const VarDecl *VD, const StorageRoots &R) {
       StorageRoots &Slot = Aliases[VD];
@@ -502,6 +388,7 @@ void SharedStateFinder::scanFunction(const FunctionDecl *FD) {
     if (!Changed)
       break;
   }
+  Cache.clear();
   StorageRoots &Out = Returns[Def];
   bool ByReference = Def->getReturnType()->isReferenceType();
   for (const Expr *E : Returned) {
@@ -606,6 +493,7 @@ bool SharedStateFinder::writesThroughHeld(const CXXRecordDecl *RD) const {
 }
 
 void SharedStateFinder::visit(const Stmt *S) {
+  Cache.clear(); // Aliases may have grown since.
   if (const auto *B = dyn_cast<BinaryOperator>(S); B && B->isAssignmentOp())
     return writtenTarget(B->getLHS(), S);
   if (const auto *U = dyn_cast<UnaryOperator>(S); U && U->isIncrementDecrementOp())

@@ -54,6 +54,8 @@ public:
 private:
   StorageRoots objectRoots(const clang::Expr *E, unsigned Depth = 0);
   StorageRoots pointeeRoots(const clang::Expr *E, unsigned Depth = 0);
+  StorageRoots objectRootsOf(const clang::Expr *E, unsigned Depth);
+  StorageRoots pointeeRootsOf(const clang::Expr *E, unsigned Depth);
   StorageRoots loadRoots(const clang::Expr *E, unsigned Depth);
   StorageRoots callRoots(const clang::Expr *Call, unsigned Depth);
   StorageRoots argumentRoots(const clang::Expr *Arg, clang::QualType Param, unsigned Depth);
@@ -84,6 +86,8 @@ private:
   /// Classes some member of which writes through a reference or pointer
   /// the object holds.
   std::set<const clang::CXXRecordDecl *> WritesThroughHeld;
+  /// Roots already computed (object: false, pointee: true), for one visit.
+  std::map<std::pair<const clang::Expr *, bool>, StorageRoots> Cache;
   /// Constructors and destructors (and what they call) walked here.
   std::set<const clang::FunctionDecl *> Walked;
 };
