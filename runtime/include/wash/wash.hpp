@@ -141,6 +141,14 @@ void start();
 /// end time: only void kernels may call it, so every rank agrees when.
 void stop(CallSite loc = CallSite::current());
 
+/// Marks a per-particle kernel that deliberately changes shared state (a
+/// global or static variable, a global random engine, std::rand): the
+/// translator then accepts it, although its result depends on the order
+/// particles run in and so differs between backends and ranks. Call it in
+/// the kernel's own body; it does nothing at run time. For random numbers
+/// use wash::random instead, which is the same everywhere.
+inline void allow_shared_state() {}
+
 } // namespace wash
 
 // Program options. The runtime strips the wash options (--steps, --out, ...;

@@ -372,6 +372,8 @@ private:
       Note += Newlines ? std::string(Newlines, '\n') : " ";
       I += Space.size();
     }
+    if (Call.Id == ApiCall::allow_shared_state)
+      return Note + ": a marker for the translator";
     return Note + (Call.Kernel ? ": run by the driver" : ": registered by the translator");
   }
 

@@ -31,7 +31,8 @@ class KernelAnalyser {
 public:
   KernelAnalyser(ASTContext &Ctx, Diagnoser &D, Kernel &K, SourceLocation KernelLoc,
                  const std::vector<ParticleType> &Types)
-      : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc), Types(Types) {}
+      : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc), Types(Types),
+        Shared(Ctx, D, kernelKindName(K.Kind), K.Function) {}
 
   void run(const FunctionDecl *Def) {
     // The driver calls the kernel by its plain name, with no template arguments.
@@ -51,6 +52,7 @@ public:
       add({TypeField, Target::Own, Mode::Read, std::nullopt, K.Pos});
     if (!K.NeighbourType.empty())
       add({TypeField, Target::Neighbour, Mode::Read, std::nullopt, K.Pos});
+    AllowShared = allowsSharedState(Def);
     analyse(Def, Params);
     reportEscapedLambdas();
   }
@@ -222,6 +224,8 @@ private:
   std::set<const Expr *> DirectCallees;
   std::vector<const LambdaExpr *> ParticleLambdas;
   std::set<const CXXRecordDecl *> AnalysedLambdas;
+  SharedStateFinder Shared;
+  bool AllowShared = false; ///< The kernel calls wash::allow_shared_state().
 };
 
 void KernelAnalyser::call(const CallExpr *CE) {
@@ -438,18 +442,14 @@ void KernelAnalyser::libraryCall(const CallExpr *CE) {
   }
 }
 
-/// Per-particle kernels writing a global or static variable: the result
-/// depends on the order particles are visited in, which backends and ranks
-/// do not share. Reading globals (set in main) is fine.
+/// Per-particle kernels changing global, static or library state: the
+/// result depends on the order particles are visited in, which backends and
+/// ranks do not share. Reading globals (set in main) is fine.
 void KernelAnalyser::globalWrite(const Stmt *S) {
-  if (K.Kind != KernelKind::Update && K.Kind != KernelKind::Force &&
-      K.Kind != KernelKind::Reduction)
-    return;
-  const VarDecl *VD = globalWrittenBy(S);
-  if (!VD || !isUserCode(Ctx.getSourceManager(), VD))
-    return;
-  D.report(DiagId::GlobalWriteInParticleKernel, S->getBeginLoc(),
-           {kernelKindName(K.Kind), K.Function, VD->getQualifiedNameAsString()});
+  if ((K.Kind == KernelKind::Update || K.Kind == KernelKind::Force ||
+       K.Kind == KernelKind::Reduction) &&
+      !AllowShared)
+    Shared.visit(S);
 }
 
 /// A particle bound to a parameter whose type is a template parameter
