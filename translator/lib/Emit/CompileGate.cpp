@@ -13,6 +13,8 @@
 #include "llvm/Support/Path.h"
 #include "llvm/Support/VirtualFileSystem.h"
 
+#include <optional>
+
 using namespace clang;
 
 #ifndef WASH_SOURCE_DIR
@@ -95,20 +97,41 @@ size_t programIndex(const std::vector<GeneratedFile> &Files, const std::string &
   return 0;
 }
 
-/// How far above an error in the driver its kernel's call may be.
-constexpr unsigned KernelSearchLines = 30;
+/// How far below its kernel's comment an error in the driver may be.
+constexpr unsigned KernelSectionLines = 40;
 
-/// The registration of the kernel called nearest above Line of Text (the
-/// driver calls kernel `f` as `::f(`), or an invalid position.
-SourcePos nearestKernel(llvm::StringRef Text, unsigned Line, const std::vector<Kernel> &Kernels) {
+/// The registration of the kernel whose section of the driver holds Line of
+/// Text, or an invalid position. The driver opens the section of each kernel
+/// with `// <function>: <kind> kernel` (DriverParts' kernelComment), in
+/// registration order among the kernels of one function and kind.
+SourcePos kernelAt(llvm::StringRef Text, unsigned Line, const std::vector<Kernel> &Kernels) {
   llvm::SmallVector<llvm::StringRef, 0> Lines;
   Text.split(Lines, '\n');
-  for (unsigned L = std::min<size_t>(Line, Lines.size()); L > 0 && L + KernelSearchLines > Line;
-       --L)
-    for (const Kernel &K : Kernels)
-      if (Lines[L - 1].contains("::" + K.Function + "("))
-        return K.Pos;
-  return {};
+  std::vector<unsigned> Seen(Kernels.size(), 0); // Comments met per kernel.
+  std::optional<size_t> Current;
+  unsigned CurrentLine = 0;
+  for (unsigned L = 1; L <= std::min<size_t>(Line, Lines.size()); ++L) {
+    llvm::StringRef Trimmed = Lines[L - 1].trim();
+    for (size_t K = 0; K < Kernels.size(); ++K) {
+      std::string Comment =
+          "// " + Kernels[K].Function + ": " + kernelKindName(Kernels[K].Kind) + " kernel";
+      if (!Trimmed.starts_with(Comment))
+        continue;
+      // The n-th such comment is the n-th kernel of that function and kind.
+      unsigned Nth = Seen[K]++;
+      for (size_t J = 0; J < Kernels.size(); ++J)
+        if (Kernels[J].Function == Kernels[K].Function && Kernels[J].Kind == Kernels[K].Kind &&
+            Nth-- == 0) {
+          Current = J;
+          CurrentLine = L;
+          break;
+        }
+      break;
+    }
+  }
+  if (!Current || Line - CurrentLine > KernelSectionLines)
+    return {};
+  return Kernels[*Current].Pos;
 }
 
 } // namespace
@@ -180,8 +203,7 @@ std::vector<CompileError> checkGeneratedCode(const std::vector<GeneratedFile> &F
     Collector.Errors.push_back({{}, "", 0, "clang could not run on the generated code", {}});
   for (CompileError &E : Collector.Errors)
     if (E.GeneratedFile == Setup.Program)
-      E.Kernel =
-          nearestKernel(Files[programIndex(Files, Setup.Program)].Text, E.GeneratedLine, Kernels);
+      E.Kernel = kernelAt(Files[programIndex(Files, Setup.Program)].Text, E.GeneratedLine, Kernels);
   return std::move(Collector.Errors);
 }
 

@@ -29,8 +29,8 @@ struct CompileError {
   std::string GeneratedFile;
   unsigned GeneratedLine = 0;
   std::string Message; ///< clang's message.
-  /// For an error in generated code: the registration of the kernel whose
-  /// call it is near in the driver, if any (the user's place to report it).
+  /// For an error in the driver: the registration of the kernel whose
+  /// section of the driver it is in, if any (the user's place to report it).
   SourcePos Kernel;
 };
 
@@ -48,8 +48,8 @@ struct CompileGateSetup {
 /// project builds it: -std=c++20, the backend's include folders (and -fopenmp
 /// where its target uses OpenMP), the project folder, then the user's flags.
 /// Returns every error clang reports (warnings are not errors), in order;
-/// those in the driver name the registration of the kernel Kernels lists
-/// whose call is nearest above them.
+/// those in the driver name the registration of the kernel (of Kernels)
+/// whose section they are in.
 std::vector<CompileError> checkGeneratedCode(const std::vector<GeneratedFile> &Files,
                                              const CompileGateSetup &Setup,
                                              const std::vector<Kernel> &Kernels);
