@@ -187,11 +187,14 @@ static bool passesCompileGate(const std::vector<GeneratedFile> &Files, const Mod
   for (const CompileError &E : Errors) {
     clang::SourceLocation At = D.fromPos(E.Pos);
     std::string Message = E.Message;
+    // Not in the user's code: say where it is.
     if (At.isInvalid()) {
       At = D.fromPos(E.Kernel);
       if (E.GeneratedLine)
         Message +=
             " (in the generated " + E.GeneratedFile + ":" + std::to_string(E.GeneratedLine) + ")";
+      else if (E.Pos.valid())
+        Message += " (in " + E.Pos.File + ":" + std::to_string(E.Pos.Line) + ")";
     }
     if (At.isInvalid())
       At = SM.getLocForStartOfFile(SM.getMainFileID());
