@@ -38,6 +38,17 @@ namespace path = llvm::sys::path;
 /// backends/mpi link OpenMP::OpenMP_CXX, which adds -fopenmp).
 bool usesOpenMP(Backend B) { return B != Backend::Serial; }
 
+/// Whether this build found what the backend's headers include beyond the
+/// standard library: omp.h (in clang's resource directory or the C++
+/// compiler's) and mpi.h. Without them the gate cannot parse the program and
+/// is skipped, rather than rejecting every program.
+bool canCheck(Backend B) {
+  if (usesOpenMP(B) && std::string(WASH_OPENMP_INCLUDE_DIR).empty() &&
+      !llvm::sys::fs::exists(WASH_CLANG_RESOURCE_DIR "/include/omp.h"))
+    return false;
+  return !backendInfo(B).Distributed || !std::string(WASH_MPI_INCLUDE_DIRS).empty();
+}
+
 /// Collects clang's errors instead of printing them.
 class ErrorCollector : public DiagnosticConsumer {
 public:
@@ -161,6 +172,8 @@ std::vector<std::string> backendIncludeDirs(const std::string &ExecutablePath, B
 std::vector<CompileError> checkGeneratedCode(const std::vector<GeneratedFile> &Files,
                                              const CompileGateSetup &Setup,
                                              const std::vector<Kernel> &Kernels) {
+  if (!canCheck(Setup.Target))
+    return {};
   std::string ProjectDir = absolute(Setup.ProjectDir);
   auto Memory = llvm::makeIntrusiveRefCnt<llvm::vfs::InMemoryFileSystem>();
   for (const GeneratedFile &F : Files)
