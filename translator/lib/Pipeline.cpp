@@ -13,6 +13,7 @@
 #include "wash/translator/Analysis/Liveness.h"
 #include "wash/translator/Analysis/ResolveFields.h"
 #include "wash/translator/Analysis/SummariseAccesses.h"
+#include "wash/translator/Emit/CompileGate.h"
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Frontend/CheckVariables.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
@@ -195,6 +196,33 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     llvm::report_fatal_error("the recipe ran fewer passes than Passes.def lists");
 }
 
+/// Runs the compile gate on Files and reports each error at the user's
+/// line, else at its kernel's registration, else at the simulation's start.
+static bool passesCompileGate(const std::vector<GeneratedFile> &Files, const Model &M,
+                              const Options &Opts, Diagnoser &D) {
+  CompileGateSetup Setup{Opts.OutputDir, Files[1].Name /* the program */, Opts.Target,
+                         Opts.ExecutablePath, Opts.CompilerArgs};
+  std::vector<CompileError> Errors = checkGeneratedCode(Files, Setup, M.Kernels);
+  clang::SourceManager &SM = D.sourceManager();
+  for (const CompileError &E : Errors) {
+    clang::SourceLocation At = D.fromPos(E.Pos);
+    std::string Message = E.Message;
+    // Not in the user's code: say where it is.
+    if (At.isInvalid()) {
+      At = D.fromPos(E.Kernel);
+      if (E.GeneratedLine)
+        Message +=
+            " (in the generated " + E.GeneratedFile + ":" + std::to_string(E.GeneratedLine) + ")";
+      else if (E.Pos.valid())
+        Message += " (in " + E.Pos.File + ":" + std::to_string(E.Pos.Line) + ")";
+    }
+    if (At.isInvalid())
+      At = SM.getLocForStartOfFile(SM.getMainFileID());
+    D.report(DiagId::GeneratedCodeDoesNotCompile, At, {Message});
+  }
+  return Errors.empty();
+}
+
 int runPipeline(const Options &Opts) {
   // Where to stop and print the model, if anywhere.
   std::optional<PassId> DumpAfter = Opts.DumpAfter;
@@ -217,6 +245,9 @@ int runPipeline(const Options &Opts) {
     // Emit: rewrite the user's code and generate the rest, still in memory.
     if (!Failed && !DumpAfter)
       Failed = !emitProgram(Ctx, D, M, Refs, Includes, Opts, Files) || D.hasErrors();
+    // Check: the generated code compiles, or nothing is written.
+    if (!Failed && !DumpAfter && Opts.CompileGate)
+      Failed = !passesCompileGate(Files, M, Opts, D);
   });
   if (!Parsed || Failed)
     return 1;

@@ -30,6 +30,10 @@ static cl::opt<std::string>
             cl::desc("Also write a depfile (Makefile syntax) naming every file the translation "
                      "read: the simulation and each header it includes"),
             cl::value_desc("file"), cl::cat(WashCategory));
+static cl::opt<bool> NoCompileGate(
+    "no-compile-gate",
+    cl::desc("Write the generated project without first type-checking it (to debug wash)"),
+    cl::cat(WashCategory));
 static cl::opt<bool> DumpModel("dump-model",
                                cl::desc("Print the analysed model of the simulation and stop"),
                                cl::cat(WashCategory));
@@ -80,6 +84,7 @@ int main(int Argc, const char **Argv) {
   Opts.OutputDir = OutputDir;
   Opts.DepFile = DepFile;
   Opts.DumpModel = DumpModel;
+  Opts.CompileGate = !NoCompileGate;
   if (DumpAfter.getNumOccurrences())
     Opts.DumpAfter = wash::tr::findPass(DumpAfter);
   Opts.ExecutablePath = sys::fs::getMainExecutable(Argv[0], reinterpret_cast<void *>(&main));

@@ -35,6 +35,9 @@ struct Options {
   /// over DumpModel, which prints it after the last pass).
   std::optional<PassId> DumpAfter;
   std::string ExecutablePath; ///< To find an installed wash's API headers.
+  /// Type-check the generated code before writing it (--no-compile-gate
+  /// turns it off, for debugging the translator).
+  bool CompileGate = true;
 };
 
 } // namespace wash::tr
