@@ -1,8 +1,8 @@
 // Float storage read back right after it is written: an update kernel sets
 // the velocity, then reads it to move the particle. The position must be
 // computed from the stored (float) velocity, as in the reference. g++ 12's
-// tree SLP vectoriser once kept the unrounded double in a register instead
-// (positions 1 ULP off): wash builds generated code without it
+// tree SLP vectoriser uses the unrounded double instead (positions 1 ULP
+// off) unless the store goes through wash::backend::rounded
 // (docs/performance.md, "g++ and float storage").
 #include <wash/wash.hpp>
 
