@@ -12,6 +12,7 @@
 #pragma once
 
 #include <wash/math.hpp>
+#include <wash/random.hpp>
 #include <wash/settings.hpp>
 #include <wash/vec.hpp>
 

@@ -4,10 +4,28 @@
 #include <wash/detail/run_settings.hpp>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cxxabi.h>
 #include <new>
 #include <string>
+#include <typeinfo>
 
 namespace wash::detail {
+namespace {
+
+/// The demangled type of the exception being handled ("int"), or "unknown".
+std::string currentExceptionType() {
+  const std::type_info *type = abi::__cxa_current_exception_type();
+  if (!type)
+    return "unknown";
+  int status = 0;
+  char *name = abi::__cxa_demangle(type->name(), nullptr, nullptr, &status);
+  std::string text = status == 0 && name ? name : type->name();
+  std::free(name);
+  return text;
+}
+
+} // namespace
 
 int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
   std::string program = argc > 0 ? argv[0] : "wash";
@@ -40,6 +58,12 @@ int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
   } catch (const std::exception &e) {
     std::fflush(stdout);
     std::fprintf(stderr, "%s: error: %s\n", program.c_str(), e.what());
+    return 1;
+  } catch (...) {
+    // `throw 42;` in a kernel: no message to print, but the type and when.
+    std::fflush(stdout);
+    std::fprintf(stderr, "%s: error: an exception of type '%s' thrown %s\n",
+                 program.c_str(), currentExceptionType().c_str(), runStage().describe().c_str());
     return 1;
   }
 }

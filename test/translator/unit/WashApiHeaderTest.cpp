@@ -82,7 +82,9 @@ Signature signature(const FunctionDecl *FD, ASTContext &Ctx) {
 }
 
 /// Free functions of these headers are the API; math.hpp and vec.hpp are
-/// plain maths that kernels call like any library, with no meaning to wash.
+/// plain maths that kernels call like any library, with no meaning to wash,
+/// and so is random.hpp to the translator: generated code calls the same
+/// wash::random, which reads the step from the run (wash/detail/random.hpp).
 bool inApiHeader(const SourceManager &SM, SourceLocation L) {
   StringRef File = SM.getFilename(SM.getExpansionLoc(L));
   return File.ends_with("wash/wash.hpp") || File.ends_with("wash/settings.hpp");

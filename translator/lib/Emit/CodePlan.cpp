@@ -1,5 +1,6 @@
 //===- CodePlan.cpp - storage, names and access text for generated code ---===//
 #include "wash/translator/Emit/CodePlan.h"
+#include "wash/translator/Emit/RuntimeNames.h"
 #include "wash/translator/WashApiTable.h"
 
 #include <algorithm>
@@ -113,9 +114,10 @@ std::string CodePlan::writeText(const std::string &Name, const std::string &Obje
   std::string Target = "wash_gen::P." + It->second + "[" + Object + "]";
   if (!Float)
     return Target + " = " + Value;
+  // rounded(): what g++ stores is what a later read sees (columns.hpp).
   if (ByName.at(Name)->Kind == ForceKind::Vector)
-    return Target + " = wash_gen::Stored(wash::ParticleVec(" + Value + "))";
-  return Target + " = wash_gen::Real(" + Value + ")";
+    return Target + " = " + rt::Rounded + "(wash_gen::Stored(wash::ParticleVec(" + Value + ")))";
+  return Target + " = " + rt::Rounded + "(wash_gen::Real(" + Value + "))";
 }
 
 std::optional<std::string> CodePlan::distanceText(const SourcePos &P,

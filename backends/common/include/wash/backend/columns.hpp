@@ -1,6 +1,8 @@
 //===- wash/backend/columns.hpp - structure-of-arrays storage -----*- C++ -*-===//
 #pragma once
 
+#include <wash/vec.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -28,6 +30,35 @@ inline constexpr std::size_t parallelMinimum = 32768;
 /// Particle index in the current storage order (which changes when particles
 /// are reordered by cell; the id does not).
 using Index = std::uint32_t;
+
+/// A value a kernel stores into a float column, already rounded to float,
+/// hidden from g++'s optimiser: g++ 12's tree SLP vectoriser would let a read
+/// of the column that follows the store use the unrounded double instead
+/// (test/e2e/scenes/float_store.cpp; docs/performance.md, "g++ and float
+/// storage"). The empty asm only says the value may have changed: no code.
+#if defined(__GNUC__) && !defined(__clang__) && (defined(__x86_64__) || defined(__i386__))
+#define WASH_OPAQUE(value) asm("" : "+x"(value))
+#elif defined(__GNUC__) && !defined(__clang__) && defined(__aarch64__)
+#define WASH_OPAQUE(value) asm("" : "+w"(value))
+#elif defined(__GNUC__) && !defined(__clang__)
+#define WASH_OPAQUE(value) asm("" : "+m"(value))
+#else
+#define WASH_OPAQUE(value) (void)0
+#endif
+template <typename T> inline T rounded(T value) {
+  WASH_OPAQUE(value);
+  return value;
+}
+template <typename T, int D> inline Vec<T, D> rounded(Vec<T, D> value) {
+  if constexpr (sizeof(value) == 8) { // two floats in one register: SLP keeps it one
+    WASH_OPAQUE(value);
+  } else {
+    for (int a = 0; a < D; ++a)
+      WASH_OPAQUE(*value[a]);
+  }
+  return value;
+}
+#undef WASH_OPAQUE
 
 /// A particle-loop body with nothing to report, as the body of a backend's
 /// forEachParticleChecked (whose body returns whether what it wrote is finite).

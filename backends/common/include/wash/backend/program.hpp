@@ -1,7 +1,7 @@
 //===- wash/backend/program.hpp - what generated code includes ----*- C++ -*-===//
 //
 // Generated programs include this instead of <wash/wash.hpp>: the API's
-// vectors, constants and settings, plus the pieces the generated driver uses.
+// vectors, constants, settings and random numbers, plus the pieces the generated driver uses.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -19,6 +19,7 @@
 #include <wash/backend/search_geometry.hpp>
 #include <wash/backend/variables.hpp>
 #include <wash/math.hpp>
+#include <wash/random.hpp>
 #include <wash/settings.hpp>
 #include <wash/vec.hpp>
 
