@@ -15,12 +15,12 @@ namespace {
 std::vector<std::string> forcesOf(const std::string &Code, bool &Ok) {
   std::vector<std::string> Names;
   withAst(Code, [&](ASTContext &Ctx, Diagnoser &D) {
-    Model M;
-    M.Sim.Dimension = 2;
     AstRefs Refs;
-    Ok = collectSimulation(Ctx, D, M, Refs);
-    for (const ForceRegistration &F : M.Forces)
-      Names.push_back(F.Name);
+    std::optional<Registrations> R = collectSimulation(Ctx, D, 2, Refs);
+    Ok = R.has_value();
+    if (R)
+      for (const ForceRegistration &F : R->Forces)
+        Names.push_back(F.Name);
   });
   return Names;
 }
