@@ -331,8 +331,11 @@ def main():
             target = "%s-%s" % (p.name, b)
             exe = os.path.join(bld, target)
             if not os.path.exists(exe):
+                # Again alone, for its messages (and past a transient failure).
                 log = os.path.join(work, b + "-build.txt")
-                run(["cmake", "--build", bld, "--target", target], log, timeout=600)
+                if run(["cmake", "--build", bld, "--target", target], log, timeout=600) == 0:
+                    print("  %s: built only on a second try (see logs/build.txt)" % b)
+            if not os.path.exists(exe):
                 generated = os.path.join(bld, target + ".wash", p.name + "." + b + ".cpp")
                 text = open(log, errors="replace").read()
                 if os.path.exists(generated):
