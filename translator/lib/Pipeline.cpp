@@ -146,7 +146,14 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
   if (!checkVariables(Ctx, D) || Stop(PassId::CheckVariables))
     return;
-  if (!inferAccesses(Ctx, D, Refs, M) || Stop(PassId::InferAccesses))
+  auto Accesses = inferAccesses(Ctx, D, Refs, M.Kernels, M.Types);
+  if (!Accesses)
+    return;
+  for (unsigned I = 0; I < M.Kernels.size(); ++I)
+    M.Kernels[I].Accesses = std::move((*Accesses)[I]);
+  std::vector<Finding> Limit = checkForceLimit(M.Forces, M.Kernels);
+  M.Findings.insert(M.Findings.end(), Limit.begin(), Limit.end());
+  if (!Limit.empty() || Stop(PassId::InferAccesses))
     return;
   M.Distances = findNeighbourDistances(Ctx, D);
   if (Stop(PassId::FindNeighbourDistances))

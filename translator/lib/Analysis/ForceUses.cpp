@@ -3,6 +3,7 @@
 #include "wash/translator/Names.h"
 
 #include <algorithm>
+#include <set>
 
 namespace wash::tr {
 namespace {
@@ -79,6 +80,23 @@ std::vector<Finding> checkForceUses(const std::vector<Field> &Fields,
     }
   }
   return Findings;
+}
+
+std::vector<Finding> checkForceLimit(const std::vector<ForceRegistration> &Forces,
+                                     const std::vector<Kernel> &Kernels) {
+  std::set<std::string> Names;
+  std::vector<Finding> Out;
+  auto Count = [&](const std::string &Name, const SourcePos &Pos) {
+    if (Names.insert(Name).second && Names.size() == MaxForces + 1)
+      Out.push_back({DiagId::ForceLimit, Pos, {Name, std::to_string(MaxForces)}, {}});
+  };
+  for (const ForceRegistration &F : Forces)
+    Count(F.Name, F.Pos);
+  for (const Kernel &K : Kernels)
+    for (const Access &A : K.Accesses)
+      if (A.Kind)
+        Count(A.Field, A.Pos);
+  return Out;
 }
 
 } // namespace wash::tr

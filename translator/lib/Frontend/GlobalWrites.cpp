@@ -14,13 +14,6 @@ namespace {
 
 constexpr unsigned MaxDepth = 64;
 
-bool isOneOf(StringRef N, std::initializer_list<StringRef> Names) {
-  for (StringRef S : Names)
-    if (N == S)
-      return true;
-  return false;
-}
-
 void merge(StorageRoots &Into, const StorageRoots &From) { Into.insert(From.begin(), From.end()); }
 
 const Expr *strip(const Expr *E) {

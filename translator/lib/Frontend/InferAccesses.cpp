@@ -29,9 +29,9 @@ struct Frame {
 
 class KernelAnalyser {
 public:
-  KernelAnalyser(ASTContext &Ctx, Diagnoser &D, Kernel &K, SourceLocation KernelLoc,
-                 const std::vector<ParticleType> &Types)
-      : Ctx(Ctx), D(D), K(K), KernelLoc(KernelLoc), Types(Types),
+  KernelAnalyser(ASTContext &Ctx, Diagnoser &D, const Kernel &K, std::vector<Access> &Out,
+                 SourceLocation KernelLoc, const std::vector<ParticleType> &Types)
+      : Ctx(Ctx), D(D), K(K), Out(Out), KernelLoc(KernelLoc), Types(Types),
         Shared(Ctx, D, kernelKindName(K.Kind), K.Function) {}
 
   void run(const FunctionDecl *Def) {
@@ -201,7 +201,7 @@ private:
   void userCall(const CallExpr *CE, const FunctionDecl *FD);
   void add(Access A) {
     if (Recorded.insert(std::make_tuple(A.Field, A.On, A.How, A.Pos.Line, A.Pos.Col)).second)
-      K.Accesses.push_back(std::move(A));
+      Out.push_back(std::move(A));
   }
   bool anyParticleArg(const CallExpr *CE) {
     for (const Expr *A : CE->arguments())
@@ -212,7 +212,8 @@ private:
 
   ASTContext &Ctx;
   Diagnoser &D;
-  Kernel &K;
+  const Kernel &K;
+  std::vector<Access> &Out; ///< The kernel's Kernel::Accesses.
   SourceLocation KernelLoc;
   const std::vector<ParticleType> &Types;
   std::vector<Frame *> Frames;
@@ -585,32 +586,17 @@ void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
 
 } // namespace
 
-/// Every force is a column and a member of several generated structs: g++'s
-/// time and memory on the generated code grow with the count (figures in
-/// docs/diagnostics.md, ForceLimit).
-static constexpr unsigned MaxForces = 1000;
-
-static void checkForceCount(Diagnoser &D, const Model &M) {
-  std::set<std::string> Names;
-  auto Count = [&](const std::string &Name, const SourcePos &Pos) {
-    if (Names.insert(Name).second && Names.size() == MaxForces + 1)
-      D.report(DiagId::ForceLimit, D.fromPos(Pos), {Name, std::to_string(MaxForces)});
-  };
-  for (const ForceRegistration &F : M.Forces)
-    Count(F.Name, F.Pos);
-  for (const Kernel &K : M.Kernels)
-    for (const Access &A : K.Accesses)
-      if (A.Kind)
-        Count(A.Field, A.Pos);
-}
-
-bool inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs, Model &M) {
-  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
-    KernelAnalyser A(Ctx, D, M.Kernels[I], D.fromPos(M.Kernels[I].Pos), M.Types);
+std::optional<std::vector<std::vector<Access>>>
+inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs,
+              const std::vector<Kernel> &Kernels, const std::vector<ParticleType> &Types) {
+  std::vector<std::vector<Access>> Accesses(Kernels.size());
+  for (unsigned I = 0; I < Kernels.size(); ++I) {
+    KernelAnalyser A(Ctx, D, Kernels[I], Accesses[I], D.fromPos(Kernels[I].Pos), Types);
     A.run(Refs.Kernels[I]);
   }
-  checkForceCount(D, M);
-  return !D.hasErrors();
+  if (D.hasErrors())
+    return std::nullopt;
+  return Accesses;
 }
 
 } // namespace wash::tr

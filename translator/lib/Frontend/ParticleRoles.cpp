@@ -8,13 +8,6 @@ using namespace clang;
 
 namespace wash::tr {
 
-static bool isOneOf(StringRef N, std::initializer_list<StringRef> Names) {
-  for (StringRef S : Names)
-    if (N == S)
-      return true;
-  return false;
-}
-
 Roles RoleEvaluator::of(const Expr *E) const {
   for (unsigned Depth = 0; E && Depth < 1000; ++Depth) {
     if (const auto *P = dyn_cast<ParenExpr>(E))

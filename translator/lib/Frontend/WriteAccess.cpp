@@ -1,18 +1,12 @@
 //===- WriteAccess.cpp ----------------------------------------------------===//
 #include "wash/translator/Frontend/WriteAccess.h"
+#include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/DeclCXX.h"
 
 using namespace clang;
 
 namespace wash::tr {
-
-static bool isOneOf(StringRef N, std::initializer_list<StringRef> Names) {
-  for (StringRef S : Names)
-    if (N == S)
-      return true;
-  return false;
-}
 
 bool holdsMutablePointer(QualType T, unsigned Depth) {
   if (Depth > 4 || T.isNull())

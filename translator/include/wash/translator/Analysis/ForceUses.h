@@ -18,4 +18,12 @@ namespace wash::tr {
 std::vector<Finding> checkForceUses(const std::vector<Field> &Fields,
                                     const std::vector<Kernel> &Kernels);
 
+/// Every force is a column and a member of several generated structs: g++'s
+/// time and memory on the generated code grow with the count (figures in
+/// docs/diagnostics.md, ForceLimit). A ForceLimit error at the first use of
+/// the force one past the limit, registered or accessed (Kernel::Accesses).
+inline constexpr unsigned MaxForces = 1000;
+std::vector<Finding> checkForceLimit(const std::vector<ForceRegistration> &Forces,
+                                     const std::vector<Kernel> &Kernels);
+
 } // namespace wash::tr

@@ -7,9 +7,12 @@
 
 #include "clang/AST/ASTContext.h"
 
+#include <optional>
+#include <vector>
+
 namespace wash::tr {
 
-/// Fills Kernel::Accesses for every kernel: each property getter and setter
+/// Kernel::Accesses of each of Kernels: each property getter and setter
 /// reached from the kernel's body, attributed to the kernel's own particle or
 /// to a neighbour. Values of particle type carry a role (own particle,
 /// neighbour, neighbour list, iterator into it) through locals, copies,
@@ -17,7 +20,11 @@ namespace wash::tr {
 /// or handed to a standard algorithm), and into helpers, whose parameters take
 /// the roles of their arguments. Reports neighbour writes, recursion, calls
 /// through function pointers and undefined helpers that receive a particle,
-/// and accessors called on particles of unknown origin. Returns false on error.
-bool inferAccesses(clang::ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs, Model &M);
+/// and accessors called on particles of unknown origin, and state outside the
+/// particle that a per-particle kernel may change (GlobalWrites). nullopt on
+/// error.
+std::optional<std::vector<std::vector<Access>>>
+inferAccesses(clang::ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs,
+              const std::vector<Kernel> &Kernels, const std::vector<ParticleType> &Types);
 
 } // namespace wash::tr

@@ -13,6 +13,7 @@
 #include "clang/AST/Decl.h"
 #include "clang/AST/Expr.h"
 
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -37,6 +38,14 @@ std::optional<ParticleAccessor> particleAccessor(const clang::FunctionDecl *FD);
 bool involvesParticle(clang::QualType T);
 /// The D of wash::Vec<T, D>, through typedefs, references and cv-qualifiers.
 std::optional<unsigned> vecDimension(clang::QualType T);
+
+/// N is one of Names (a function or method name the passes know).
+inline bool isOneOf(llvm::StringRef N, std::initializer_list<llvm::StringRef> Names) {
+  for (llvm::StringRef S : Names)
+    if (N == S)
+      return true;
+  return false;
+}
 
 /// D is in a file the user wrote, not a system header (the standard library,
 /// the wash API, which is passed with -isystem).
