@@ -20,6 +20,15 @@ import subprocess
 import sys
 
 MAX_DEPTH = 3
+# The init kernel's jitter: wash::random, or (--no-wash-random, for wash
+# builds older than it) a hash written in the program.
+RANDOM = "wash::random"
+HASH_HELPER = """double hash01(long k, long s) {
+    unsigned long x = (unsigned long)k * 2654435761ul + (unsigned long)s * 40503ul;
+    x ^= x >> 13; x *= 0x5bd1e995ul; x ^= x >> 15;
+    return (double)(x % 1000003ul) / 1000003.0;
+}
+"""
 
 
 class Program:
@@ -167,9 +176,9 @@ using hdr_real = double;
         axes = [("(k %% SIDE)", 1), ("((k / SIDE) %% SIDE)", 2), ("(k / (SIDE * SIDE))", 3)][:self.dim]
         coords = []
         for i, (cell, stream) in enumerate(axes):
-            jitter = " + 0.3 * (wash::random(k, %d) - 0.5)" % stream if self.jitter else ""
+            jitter = " + 0.3 * (%s(k, %d) - 0.5)" % (RANDOM, stream) if self.jitter else ""
             coords.append("(%s + 0.5%s) * SPACING" % (cell.replace("%%", "%"), jitter))
-        vel = ", ".join("0.1 * (wash::random(k, %d) - 0.5)" % (10 + i) for i in range(self.dim))
+        vel = ", ".join("0.1 * (%s(k, %d) - 0.5)" % (RANDOM, 10 + i) for i in range(self.dim))
         out = []
         w = out.append
         w("// Random wash program %s (scripts/fuzz_programs.py).\n" % self.name)
@@ -180,6 +189,8 @@ using hdr_real = double;
         w("constexpr const char* FIRST_FORCE = \"%s\";\n" % self.scalars[0])
         w("constexpr int SIDE = %d;\nconstexpr double SPACING = %r;\n" % (self.side, spacing))
         w("constexpr double RADIUS = %r;\nconstexpr double DT = 0.01;\n\n" % radius)
+        if RANDOM != "wash::random":
+            w(HASH_HELPER)
         w("double hdr_mix(double a, double b) { return 0.5 * a - 0.25 * b; }\n")
         w("double clampv(double x, double lim = 4.0) { return std::min(std::max(x, -lim), lim); }\n")
         w("double soft(double x, double k = 1.0) { return x / (k + x * x); }\n")
@@ -278,8 +289,13 @@ def main():
     parser.add_argument("--wash-dir", required=True, help="wash_DIR: a wash build or package folder")
     parser.add_argument("--mpiexec", default="mpirun")
     parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--no-wash-random", action="store_true",
+                        help="jitter with a hash in the program (wash builds without wash::random)")
     parser.add_argument("--keep", action="store_true", help="keep --out afterwards")
     args = parser.parse_args()
+    if args.no_wash_random:
+        global RANDOM
+        RANDOM = "hash01"
     sys.stdout.reconfigure(line_buffering=True)
     backends = [b for b in args.backends.split(",") if b]
     out = os.path.abspath(args.out)

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The translator, the runtime and one small scene built under AddressSanitizer
+# and UndefinedBehaviorSanitizer (build-sanitize/), then the translator's lit
+# and unit tests, the runtime's unit tests and the seed's differential test run
+# under them: any memory error or undefined behaviour fails the test that hit
+# it. Run by scripts/test.sh after the main build; alone, after
+# scripts/install-deps.sh.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build=${WASH_SANITIZE_BUILD:-build-sanitize}
+# -O1: the sanitizers' cost, not the optimiser's, should bound the run time.
+cmake -S . -B "$build" -DWASH_SANITIZE=address,undefined \
+  -DCMAKE_BUILD_TYPE=None -DCMAKE_C_FLAGS="-O1 -g1" -DCMAKE_CXX_FLAGS="-O1 -g1"
+cmake --build "$build" -j2 --target wash washModelTests washEmitTests \
+  washFrontendTests wash_runtime_tests ca_fluid_sim-reference \
+  ca_fluid_sim-serial ca_fluid_sim-openmp
+
+# Leaks are not checked: the translator exits without freeing Clang's AST on
+# purpose (clang -disable-free), and libgomp keeps its thread pool.
+export ASAN_OPTIONS=detect_leaks=0:abort_on_error=0:halt_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --test-dir "$build" --output-on-failure -j2 \
+  -R '^(translator-lit|translator-unit\.|translator-frontend\.|runtime\.|e2e\.differential\.ca_fluid_sim$)'
