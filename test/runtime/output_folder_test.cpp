@@ -15,9 +15,9 @@ namespace fs = std::filesystem;
 namespace {
 
 struct OutputFolder : testing::Test {
-  fs::path dir = fs::temp_directory_path() /
-                 ("wash-folder-test-" + std::to_string(::getpid()) + "-" +
-                  testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::path dir =
+      fs::temp_directory_path() / ("wash-folder-test-" + std::to_string(::getpid()) + "-" +
+                                   testing::UnitTest::GetInstance()->current_test_info()->name());
   void SetUp() override {
     fs::remove_all(dir);
     fs::create_directories(dir);

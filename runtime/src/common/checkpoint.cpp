@@ -336,8 +336,8 @@ void writeIndex(const std::string &path, const CheckpointIdentity &id, const Che
   e.put(s.shards);
   e.put(s.particles);
   if (s.shardChecksums.size() != s.shards)
-    throw RunError("cannot write checkpoint file '" + path + "': " +
-                   std::to_string(s.shardChecksums.size()) + " shard checksums for " +
+    throw RunError("cannot write checkpoint file '" + path +
+                   "': " + std::to_string(s.shardChecksums.size()) + " shard checksums for " +
                    std::to_string(s.shards) + " shards");
   for (std::uint64_t sum : s.shardChecksums)
     e.put(sum);

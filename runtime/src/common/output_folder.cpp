@@ -34,8 +34,8 @@ std::string holderText() {
   std::tm utc{};
   if (::gmtime_r(&now, &utc))
     std::strftime(started, sizeof started, "%Y-%m-%d %H:%M:%S UTC", &utc);
-  return "pid " + std::to_string(::getpid()) + " on host " + host + ", started " + started +
-         " (" + program_invocation_name + ")\n";
+  return "pid " + std::to_string(::getpid()) + " on host " + host + ", started " + started + " (" +
+         program_invocation_name + ")\n";
 }
 
 /// The lock file's text, waiting a moment for a run that has just taken the
@@ -56,7 +56,7 @@ std::string readHolder(int fd) {
 }
 
 bool sameFile(int fd, const std::string &path) {
-  struct stat opened {}, named {};
+  struct stat opened{}, named{};
   return ::fstat(fd, &opened) == 0 && ::stat(path.c_str(), &named) == 0 &&
          opened.st_dev == named.st_dev && opened.st_ino == named.st_ino;
 }

@@ -272,9 +272,9 @@ private:
     // and the job may end (MPI_Abort) before another gets here.
     std::error_code ec;
     std::filesystem::remove(partial_, ec);
-    const std::string left = ec ? " (the partial file '" + partial_ +
-                                      "' could not be removed: " + ec.message() + ")"
-                                : " (the partial file was removed)";
+    const std::string left =
+        ec ? " (the partial file '" + partial_ + "' could not be removed: " + ec.message() + ")"
+           : " (the partial file was removed)";
     throw RunError("error while writing '" + path_ + "': HDF5 could not " + what + cause + left);
   }
 

@@ -88,8 +88,7 @@ std::string indexPath(const std::string &folder);
 void beginCheckpoint(const std::string &partial);
 /// Writes a file under a temporary name, renamed into place (throws RunError).
 /// writeShard returns the shard's checksum, which its index is written with.
-std::uint64_t writeShard(const std::string &path, const CheckpointIdentity &id,
-                         const Shard &shard);
+std::uint64_t writeShard(const std::string &path, const CheckpointIdentity &id, const Shard &shard);
 void writeIndex(const std::string &path, const CheckpointIdentity &id,
                 const CheckpointState &state);
 /// Renames `partial` to `folder` and removes the oldest complete checkpoints
