@@ -38,8 +38,8 @@ struct Checkpoint : testing::Test {
     folder = checkpointFolder(dir.string(), 7);
     const std::string partial = partialFolder(folder);
     beginCheckpoint(partial);
-    writeShard(shardPath(partial, 0), identity(), shardOf(5));
     CheckpointState s;
+    s.shardChecksums = {writeShard(shardPath(partial, 0), identity(), shardOf(5))};
     s.iteration = 7;
     s.time = 0.25;
     s.variables = {{"speed", 1.5}};
@@ -51,7 +51,7 @@ struct Checkpoint : testing::Test {
   void TearDown() override { fs::remove_all(dir); }
   std::string refusal(std::uint32_t shard, const CheckpointIdentity &id) {
     try {
-      readShard(folder, shard, id);
+      readShard(folder, shard, id, readIndex(folder, identity()));
     } catch (const RunError &e) {
       return e.what();
     }
@@ -70,7 +70,7 @@ TEST_F(Checkpoint, RoundTrip) {
   EXPECT_EQ(s.variables[0].second, 1.5);
   ASSERT_EQ(s.frames.size(), 1u);
   EXPECT_EQ(s.frames[0].file, "sim_000005.vtp");
-  const Shard read = readShard(folder, 0, identity());
+  const Shard read = readShard(folder, 0, identity(), s);
   const Shard written = shardOf(5);
   ASSERT_EQ(read.columns.size(), written.columns.size());
   for (std::size_t c = 0; c < read.columns.size(); ++c)
@@ -115,8 +115,8 @@ TEST_F(Checkpoint, OnlyTheNewestAreKept) {
   for (std::uint64_t it : {9, 11}) {
     const std::string f = checkpointFolder(dir.string(), it), partial = partialFolder(f);
     beginCheckpoint(partial);
-    writeShard(shardPath(partial, 0), identity(), shardOf(1));
     CheckpointState s;
+    s.shardChecksums = {writeShard(shardPath(partial, 0), identity(), shardOf(1))};
     s.iteration = it;
     writeIndex(indexPath(partial), identity(), s);
     completeCheckpoint(partial, f, 2);
@@ -125,4 +125,25 @@ TEST_F(Checkpoint, OnlyTheNewestAreKept) {
   EXPECT_TRUE(fs::exists(checkpointFolder(dir.string(), 9)));
   fs::create_directories(partialFolder(checkpointFolder(dir.string(), 12))); // incomplete
   EXPECT_EQ(resolveRestart(dir.string()), checkpointFolder(dir.string(), 11));
+}
+
+TEST_F(Checkpoint, AShardOfAnotherCheckpointIsRefused) {
+  const std::string other = checkpointFolder(dir.string(), 9), partial = partialFolder(other);
+  beginCheckpoint(partial);
+  CheckpointState s;
+  s.iteration = 9;
+  s.particles = 4;
+  s.shardChecksums = {writeShard(shardPath(partial, 0), identity(), shardOf(4))};
+  writeIndex(indexPath(partial), identity(), s);
+  completeCheckpoint(partial, other, 2);
+  fs::copy_file(shardPath(other, 0), shardPath(folder, 0), fs::copy_options::overwrite_existing);
+  EXPECT_NE(refusal(0, identity()).find("is not the one its index was written with"),
+            std::string::npos);
+}
+
+TEST_F(Checkpoint, AnIndexWithoutItsShardsChecksumsIsNotWritten) {
+  CheckpointState s;
+  s.shards = 2;
+  s.shardChecksums = {1};
+  EXPECT_THROW(writeIndex((dir / "index.wck").string(), identity(), s), RunError);
 }

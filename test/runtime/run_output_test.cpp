@@ -117,10 +117,13 @@ TEST(RunOutput, WritesLeaveNoPartialFiles) {
   RunOptions o;
   o.outDir = dir.path.string();
   o.dumpPath = (dir.path / "dump.csv").string();
-  RunOutput out(o, "sim");
-  out.reserve(1 << 20);
-  out.writeFrame(0, tinyFrame());
-  out.finish(tinyFrame());
+  {
+    RunOutput out(o, "sim");
+    out.reserve(1 << 20);
+    out.writeFrame(0, tinyFrame());
+    out.finish(tinyFrame());
+    EXPECT_TRUE(fs::exists(dir.path / ".wash-lock")); // while the run lasts
+  }
   std::vector<std::string> names;
   for (const auto &entry : fs::directory_iterator(dir.path))
     names.push_back(entry.path().filename().string());

@@ -1,6 +1,7 @@
 // Checkpoint files (wash/detail/checkpoint.hpp; the format is in
 // docs/semantics.md, "Checkpoint and restart").
 #include <wash/detail/checkpoint.hpp>
+#include <wash/detail/output_folder.hpp>
 
 #include <algorithm>
 #include <csignal>
@@ -17,7 +18,7 @@ namespace {
 
 constexpr char indexMagic[8] = {'W', 'A', 'S', 'H', 'C', 'K', 'P', 'T'};
 constexpr char shardMagic[8] = {'W', 'A', 'S', 'H', 'S', 'H', 'R', 'D'};
-constexpr std::uint32_t formatVersion = 1;
+constexpr std::uint32_t formatVersion = 2; // 2: the index holds its shards' checksums
 
 /// A 64-bit checksum over a byte stream, eight bytes at a time: each step is
 /// a bijection of the state, so any one changed word changes the result.
@@ -201,10 +202,10 @@ void verifyChecksum(const std::vector<char> &file, std::size_t end, const std::s
 }
 
 /// Writes header, then the blocks, then the checksum, into a temporary file
-/// renamed onto `path`.
-void writeAtomically(const std::string &path, const std::string &header,
-                     const std::vector<const std::vector<char> *> &blocks) {
-  const std::string partial = path + ".wash-partial";
+/// renamed onto `path`; returns the checksum.
+std::uint64_t writeAtomically(const std::string &path, const std::string &header,
+                              const std::vector<const std::vector<char> *> &blocks) {
+  const std::string partial = partialPath(path);
   std::ofstream out(partial, std::ios::binary);
   if (!out)
     throw RunError("cannot open '" + partial + "' for writing: " + std::strerror(errno));
@@ -224,8 +225,12 @@ void writeAtomically(const std::string &path, const std::string &header,
     throw RunError("error while writing checkpoint file '" + path + "': " + std::strerror(errno));
   }
   fs::rename(partial, path, ec);
-  if (ec)
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(partial, ignored);
     throw RunError("cannot write checkpoint file '" + path + "': " + ec.message());
+  }
+  return value;
 }
 
 Encoder headerOf(const char (&magic)[8]) {
@@ -287,7 +292,12 @@ void beginCheckpoint(const std::string &partial) {
                    "': " + (ec ? ec.message() : "not a directory"));
 }
 
-void writeShard(const std::string &path, const CheckpointIdentity &id, const Shard &shard) {
+std::string checkpointDirectory(const RunOptions &o) {
+  return o.checkpointDir.empty() ? (fs::path(o.outDir) / "checkpoints").string() : o.checkpointDir;
+}
+
+std::uint64_t writeShard(const std::string &path, const CheckpointIdentity &id,
+                         const Shard &shard) {
   Encoder e = headerOf(shardMagic);
   CheckpointIdentity own = id;
   own.fields.clear();
@@ -298,7 +308,7 @@ void writeShard(const std::string &path, const CheckpointIdentity &id, const Sha
   std::vector<const std::vector<char> *> blocks;
   for (const Shard::Column &c : shard.columns)
     blocks.push_back(&c.bytes);
-  writeAtomically(path, e.bytes, blocks);
+  return writeAtomically(path, e.bytes, blocks);
 }
 
 void writeIndex(const std::string &path, const CheckpointIdentity &id, const CheckpointState &s) {
@@ -325,6 +335,12 @@ void writeIndex(const std::string &path, const CheckpointIdentity &id, const Che
   }
   e.put(s.shards);
   e.put(s.particles);
+  if (s.shardChecksums.size() != s.shards)
+    throw RunError("cannot write checkpoint file '" + path +
+                   "': " + std::to_string(s.shardChecksums.size()) + " shard checksums for " +
+                   std::to_string(s.shards) + " shards");
+  for (std::uint64_t sum : s.shardChecksums)
+    e.put(sum);
   writeAtomically(path, e.bytes, {});
 }
 
@@ -391,6 +407,8 @@ CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &e
     }
     s.shards = d.get<std::uint32_t>();
     s.particles = d.get<std::uint64_t>();
+    for (std::uint32_t k = 0; k < s.shards; ++k)
+      s.shardChecksums.push_back(d.get<std::uint64_t>());
   } catch (const RunError &) { // a cut file, or a corrupted length that reads past the end
     throw RunError("checkpoint file '" + path + "' is truncated or corrupted (" +
                    std::to_string(file.size()) + " bytes, its header announces more)");
@@ -403,8 +421,8 @@ CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &e
   return s;
 }
 
-Shard readShard(const std::string &folder, std::uint32_t shard,
-                const CheckpointIdentity &expected) {
+Shard readShard(const std::string &folder, std::uint32_t shard, const CheckpointIdentity &expected,
+                const CheckpointState &index) {
   const std::string path = shardPath(folder, shard);
   const std::vector<char> file = readChecked(path, shardMagic);
   Decoder d{file, 12, path};
@@ -415,6 +433,12 @@ Shard readShard(const std::string &folder, std::uint32_t shard,
   for (const CheckpointField &f : got.fields)
     bytes += f.elementBytes * s.particles;
   verifyChecksum(file, d.at + bytes, path);
+  std::uint64_t stored;
+  std::memcpy(&stored, file.data() + file.size() - 8, 8);
+  if (shard >= index.shardChecksums.size() || stored != index.shardChecksums[shard])
+    throw RunError("cannot restart from checkpoint '" + folder + "': its shard file '" + path +
+                   "' is not the one its index was written with (files of different "
+                   "checkpoints are mixed)");
   CheckpointIdentity want = expected;
   want.fields = got.fields; // the caller matches columns by name
   if (std::string bad = mismatch(got, want); !bad.empty())

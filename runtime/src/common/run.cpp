@@ -118,11 +118,7 @@ CheckpointIdentity Run::identity(std::vector<CheckpointField> fields) const {
           std::move(fields)};
 }
 
-std::string Run::checkpointDir() const {
-  const RunOptions &o = programOptions();
-  return o.checkpointDir.empty() ? (std::filesystem::path(o.outDir) / "checkpoints").string()
-                                 : o.checkpointDir;
-}
+std::string Run::checkpointDir() const { return checkpointDirectory(programOptions()); }
 
 CheckpointState Run::checkpointState(std::uint64_t step, std::uint32_t shards,
                                      std::uint64_t particles) const {

@@ -1,4 +1,6 @@
+#include <wash/detail/checkpoint.hpp>
 #include <wash/detail/hdf5_series.hpp>
+#include <wash/detail/output_folder.hpp>
 #include <wash/detail/processes.hpp>
 #include <wash/detail/run_output.hpp>
 #include <wash/detail/spread_writers.hpp>
@@ -18,10 +20,6 @@ namespace fs = std::filesystem;
 
 namespace wash::detail {
 namespace {
-
-/// Where a file is written before it is renamed into place: beside it, so on
-/// the same file system, and never a name a frame or dump could have.
-std::string partialPath(const std::string &path) { return path + ".wash-partial"; }
 
 std::string reason(int error) { return error ? std::strerror(error) : "unknown error"; }
 
@@ -163,6 +161,19 @@ RunOutput::RunOutput(const RunOptions &options, std::string baseName)
   // write (reserve() checks the space once the frame's size is known).
   if (probe(probePath(), 0) != "")
     throw RunError("output directory '" + options_.outDir + "' is not writable");
+  // One run at a time per folder (a second is refused here, naming the first);
+  // what a killed run was writing is then nobody's.
+  locks_.push_back(std::make_unique<FolderLock>(options_.outDir, "output directory", "--out"));
+  removeStalePartials(options_.outDir);
+  // Checkpoints asked for, or a folder named for them: it is created and
+  // checked now, not at the first checkpoint after an interval's work.
+  const std::string checkpoints = checkpointDirectory(options_);
+  if (options_.checkpointEvery || options_.checkpointDt || !options_.checkpointDir.empty()) {
+    checkWritableFolder(checkpoints, "checkpoint directory");
+    if (!fs::equivalent(checkpoints, options_.outDir, ec))
+      locks_.push_back(
+          std::make_unique<FolderLock>(checkpoints, "checkpoint directory", "--checkpoint-dir"));
+  }
   if (!options_.dumpPath.empty()) {
     if (fs::is_directory(options_.dumpPath, ec))
       throw RunError("cannot write the dump to '" + options_.dumpPath + "': it is a directory");
@@ -177,7 +188,7 @@ RunOutput::RunOutput(const RunOptions &options, std::string baseName)
 RunOutput::~RunOutput() = default;
 
 std::string RunOutput::probePath() const {
-  return (fs::path(options_.outDir) / ".wash-write-test").string();
+  return partialPath((fs::path(options_.outDir) / ".wash-write-test").string());
 }
 
 std::uint64_t frameBytesEstimate(const Frame &frame) {
@@ -244,7 +255,10 @@ void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional
       if (!hdf5Opener())
         throw RunError("--format hdf5: this program has no HDF5 library linked");
       const std::string h5 = (fs::path(options_.outDir) / (baseName_ + ".h5")).string();
-      hdf5_ = hdf5Opener()(h5, partialPath(h5));
+      // One file, written by every process: named by rank 0's process id.
+      const Processes *p = spread();
+      const std::uint64_t owner = p ? p->allgather(std::uint64_t(::getpid()))[0] : ::getpid();
+      hdf5_ = hdf5Opener()(h5, partialPath(h5, owner));
     }
     hdf5_->write(step, time.value_or(0.0), frame, hdf5Datasets(columns));
     return;

@@ -268,12 +268,14 @@ private:
           H5Oclose(id);
       H5Fclose(file);
     }
-    if (rankOf() == 0) {
-      std::error_code ec;
-      std::filesystem::remove(partial_, ec);
-    }
-    throw RunError("error while writing '" + path_ + "': HDF5 could not " + what + cause +
-                   " (the partial file was removed)");
+    // Every rank that fails removes it: the first to fail may be any rank,
+    // and the job may end (MPI_Abort) before another gets here.
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);
+    const std::string left =
+        ec ? " (the partial file '" + partial_ + "' could not be removed: " + ec.message() + ")"
+           : " (the partial file was removed)";
+    throw RunError("error while writing '" + path_ + "': HDF5 could not " + what + cause + left);
   }
 
   std::string path_, partial_;

@@ -85,8 +85,9 @@ void write(Run &run, const State &s, std::uint64_t step) {
   const std::string partial = partialFolder(folder);
   const CheckpointIdentity id = run.identity(fields(s));
   beginCheckpoint(partial);
-  writeShard(shardPath(partial, 0), id, shard);
-  writeIndex(indexPath(partial), id, run.checkpointState(step, 1, n));
+  CheckpointState state = run.checkpointState(step, 1, n);
+  state.shardChecksums = {writeShard(shardPath(partial, 0), id, shard)};
+  writeIndex(indexPath(partial), id, state);
   completeCheckpoint(partial, folder, programOptions().keepCheckpoints);
   run.checkpointWritten(folder, step, secondsSince(start));
 }
@@ -120,7 +121,7 @@ void restoreCheckpoint(Run &run, State &s) {
   const CheckpointState saved = readIndex(folder, id);
   ParticleStore &p = s.particles;
   for (std::uint32_t k = 0; k < saved.shards; ++k) { // one, unless another program wrote it
-    Shard shard = readShard(folder, k, id);
+    Shard shard = readShard(folder, k, id, saved);
     if (saved.shards != 1)
       throw RunError("cannot restart from checkpoint '" + folder + "': it has " +
                      std::to_string(saved.shards) + " shards; the reference writes one");

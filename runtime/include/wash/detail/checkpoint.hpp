@@ -6,9 +6,10 @@
 // variables, output bookkeeping). It is written as `<name>.partial`, every
 // file under a temporary name renamed into place, the index last, and the
 // folder renamed once complete: a folder without `.partial` and with an index
-// is complete. Every file ends with a checksum of all its bytes; a reader
-// refuses a truncated or corrupted file, or another program's checkpoint, with
-// the reason. The format is in docs/semantics.md, "Checkpoint and restart".
+// is complete. Every file ends with a checksum of all its bytes, and the
+// index holds each shard's: a reader refuses a truncated or corrupted file,
+// another program's checkpoint, or a shard of another checkpoint, with the
+// reason. The format is in docs/semantics.md, "Checkpoint and restart".
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -70,7 +71,12 @@ struct CheckpointState {
   std::vector<RunOutput::Written> frames; ///< the .pvd series so far
   std::uint32_t shards = 1;
   std::uint64_t particles = 0;
+  /// Each shard's checksum, binding the index to its shards.
+  std::vector<std::uint64_t> shardChecksums;
 };
+
+/// Where checkpoints go: --checkpoint-dir, else <out>/checkpoints.
+std::string checkpointDirectory(const RunOptions &options);
 
 /// `<dir>/checkpoint_<iteration>` and its parts.
 std::string checkpointFolder(const std::string &dir, std::uint64_t iteration);
@@ -81,7 +87,8 @@ std::string indexPath(const std::string &folder);
 /// Removes a stale `partial` folder and creates it afresh (the writing process).
 void beginCheckpoint(const std::string &partial);
 /// Writes a file under a temporary name, renamed into place (throws RunError).
-void writeShard(const std::string &path, const CheckpointIdentity &id, const Shard &shard);
+/// writeShard returns the shard's checksum, which its index is written with.
+std::uint64_t writeShard(const std::string &path, const CheckpointIdentity &id, const Shard &shard);
 void writeIndex(const std::string &path, const CheckpointIdentity &id,
                 const CheckpointState &state);
 /// Renames `partial` to `folder` and removes the oldest complete checkpoints
@@ -91,9 +98,11 @@ void completeCheckpoint(const std::string &partial, const std::string &folder, s
 /// `path` itself if it is a checkpoint, else the newest complete checkpoint
 /// in the folder `path` (throws RunError if there is none).
 std::string resolveRestart(const std::string &path);
-/// Reads and checks a file of checkpoint `folder` (throws RunError, saying why).
+/// Reads and checks a file of checkpoint `folder` (throws RunError, saying why);
+/// a shard must be the one the index names (`index.shardChecksums`).
 CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &expected);
-Shard readShard(const std::string &folder, std::uint32_t shard, const CheckpointIdentity &expected);
+Shard readShard(const std::string &folder, std::uint32_t shard, const CheckpointIdentity &expected,
+                const CheckpointState &index);
 
 /// A short hash of `text`, for CheckpointIdentity::program.
 std::string identityHash(const std::string &text);

@@ -59,6 +59,7 @@ std::uint64_t frameBytesEstimate(const Frame &frame);
 std::uint64_t frameBytesEstimate(const Frame &frame, std::uint64_t rows);
 
 class Hdf5Series;
+class FolderLock;
 
 /// Every file is written to a temporary file beside it and renamed into place,
 /// so a failed write (a full disk) leaves no truncated file behind; the HDF5
@@ -114,6 +115,7 @@ private:
   std::string framePath(std::uint64_t step) const;
   std::string probePath() const;
 
+  std::vector<std::unique_ptr<FolderLock>> locks_; ///< the folders written (released last)
   RunOptions options_;
   std::string baseName_;
   std::vector<Written> written_;

@@ -14,6 +14,7 @@
 #include <wash/backend/columns.hpp>
 #include <wash/backend/run.hpp>
 #include <wash/detail/checkpoint.hpp>
+#include <wash/detail/processes.hpp>
 
 #include <chrono>
 #include <cstring>
@@ -52,11 +53,17 @@ void writeCheckpoint(const B &backend, Run &run, std::uint64_t step, std::uint64
     shard.columns.push_back(std::move(c));
   });
   const detail::CheckpointIdentity id = run.identity(checkpointFields(columns));
-  detail::writeShard(detail::shardPath(partial, std::uint32_t(backend.rankIndex())), id, shard);
-  backend.barrier(); // every shard is in place
+  const std::uint64_t checksum =
+      detail::writeShard(detail::shardPath(partial, std::uint32_t(backend.rankIndex())), id, shard);
+  // Every shard is in place, and its checksum (for the index) known to all.
+  const detail::Processes *processes = detail::processes();
+  const std::vector<std::uint64_t> checksums =
+      backend.rankCount() > 1 ? processes->allgather(checksum) : std::vector{checksum};
   if (writer) {
-    detail::writeIndex(detail::indexPath(partial), id,
-                       run.checkpointState(step, std::uint32_t(backend.rankCount()), particles));
+    detail::CheckpointState state =
+        run.checkpointState(step, std::uint32_t(backend.rankCount()), particles);
+    state.shardChecksums = checksums;
+    detail::writeIndex(detail::indexPath(partial), id, state);
     detail::completeCheckpoint(partial, folder, detail::programOptions().keepCheckpoints);
   }
   backend.barrier(); // complete before any process goes on (or stops)
@@ -98,7 +105,7 @@ std::uint64_t restoreCheckpoint(B &backend, Run &run, Particles &P, Columns colu
   std::vector<detail::Shard> shards;
   std::uint64_t local = 0;
   for (std::uint64_t s = k * saved.shards / R; s < (k + 1) * saved.shards / R; ++s) {
-    shards.push_back(detail::readShard(folder, std::uint32_t(s), id));
+    shards.push_back(detail::readShard(folder, std::uint32_t(s), id, saved));
     local += shards.back().particles;
   }
   columns([&](const char *name, auto &column) {
