@@ -4,7 +4,8 @@
 # by h5py, Step#k numbering continued, not started again at Step#0), every VTK
 # frame and the .pvd, every CSV frame. A restart to 18 drops the steps past
 # it; after SIGTERM the HDF5 file holds the steps so far and a restart
-# continues it; an .h5 of another run is refused and left as it was. On the
+# continues it, after SIGKILL the restart continues the partial file; an .h5
+# of another run is refused and left as it was. On the
 # reference, the serial program and the mpi one at 2 ranks (parallel HDF5).
 #   fault_restart_series.sh BIN MPIEXEC
 . "$(dirname "$0")/lib.sh"
@@ -32,6 +33,13 @@ for name in a:
         if x.dtype != y.dtype or x.tobytes() != y.tobytes():
             sys.exit(f"{name}/{d} differs")
 PY
+}
+# asleep PID: whether its one thread is in the kernel's sleep (clock_nanosleep
+# or nanosleep) rather than writing.
+asleep() {
+  local call
+  read -r call _ <"/proc/$1/syscall" || return 1
+  [ "$call" = 230 ] || [ "$call" = 35 ]
 }
 # same_frames A B: every frame file and .pvd of A is in B, byte for byte.
 same_frames() {
@@ -93,6 +101,32 @@ for name in "${runs[@]}"; do
     --restart "$name-term/checkpoints"
   expect_exit 0 timeout 120 "${p[@]}" "${slow[@]}" --steps $((k + 7)) --out "$name-term-straight"
   same_h5 "$name-term-straight/sim_time.h5" "$name-term/sim_time.h5"
+
+  # SIGKILL (while the run sleeps in a kernel, not mid-write): only the
+  # partial file is left, and the restart continues it in place.
+  if [ "$name" != mpi ]; then
+    "${p[@]}" "${slow[@]}" --steps 100000 --checkpoint-every 5 --out "$name-kill" >kill.txt 2>&1 &
+    pid=$!
+    for _ in $(seq 200); do
+      [ "$(ls "$name-kill/checkpoints" 2>/dev/null | grep -vc partial)" -ge 2 ] && break
+      sleep 0.05
+    done
+    for _ in $(seq 500); do
+      kill -STOP "$pid"
+      asleep "$pid" && break
+      kill -CONT "$pid"
+      sleep 0.003
+    done
+    kill -KILL "$pid"
+    wait "$pid" 2>/dev/null
+    [ ! -e "$name-kill/sim_time.h5" ] || fail "$name: a killed run left sim_time.h5"
+    k=$(ls "$name-kill/checkpoints" | grep -v partial | tail -1)
+    k=$((10#${k#checkpoint_}))
+    expect_exit 0 timeout 120 "${p[@]}" "${slow[@]}" --steps $((k + 7)) --out "$name-kill" \
+      --restart "$name-kill/checkpoints"
+    expect_exit 0 timeout 120 "${p[@]}" "${slow[@]}" --steps $((k + 7)) --out "$name-kill-straight"
+    same_h5 "$name-kill-straight/sim_time.h5" "$name-kill/sim_time.h5"
+  fi
   echo "$name: every series continued"
 done
 [ -d reference-hdf5 ] || fail "no program ran"

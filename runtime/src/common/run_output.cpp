@@ -295,10 +295,14 @@ void RunOutput::openHdf5(bool restart) {
   if (restart)
     for (const Written &w : written_)
       keep.push_back({w.step, w.time});
-  if (!keep.empty() && root_ && !options_.quiet && !fs::exists(h5))
-    std::printf("wash: no %s to continue: the restarted series starts at Step#0, with the "
-                "frames after the checkpoint\n",
-                h5.c_str());
+  if (!keep.empty() && root_ && !options_.quiet && !fs::exists(h5)) {
+    if (fs::exists(partialPath(h5)))
+      std::printf("wash: continuing %s, left by a run that was killed\n", partialPath(h5).c_str());
+    else
+      std::printf("wash: no %s to continue: the restarted series starts at Step#0, with the "
+                  "frames after the checkpoint\n",
+                  h5.c_str());
+  }
   hdf5_ = hdf5Opener()(h5, partialPath(h5), keep);
 }
 

@@ -251,31 +251,35 @@ private:
 
   /// A restart into the folder of the run it continues: `partial` a copy of
   /// `path` whose groups are `keep` (those after them dropped), the next
-  /// group after them. False where there is no `path` to continue.
+  /// group after them. Without `path`, the `partial` a killed run left is
+  /// continued in place (never truncated). False where there is neither.
   bool continueFrom(const std::vector<Hdf5Step> &keep, hid_t access) {
     // One answer for every rank: rank 0's (it copies the file).
-    int copied = 0; // 1: copied; -1: copying failed, errno in `error`
+    int how = 0; // 1: copied; 2: the partial file continued; -1: copying failed
     int error = 0;
     if (rankOf() == 0 && std::filesystem::exists(path_)) {
       std::error_code ec;
       std::filesystem::copy_file(path_, partial_, std::filesystem::copy_options::overwrite_existing,
                                  ec);
-      copied = ec ? -1 : 1;
+      how = ec ? -1 : 1;
       error = ec.value();
-    }
+    } else if (rankOf() == 0 && std::filesystem::exists(partial_))
+      how = 2;
 #ifdef WASH_HDF5_PARALLEL
-    int answer[2] = {copied, error};
+    int answer[2] = {how, error};
     MPI_Bcast(answer, 2, MPI_INT, 0, MPI_COMM_WORLD);
-    copied = answer[0];
+    how = answer[0];
     error = answer[1];
 #endif
-    if (copied == 0)
+    if (how == 0)
       return false;
-    if (copied < 0) {
+    if (how < 0) {
       removePartial();
       throw RunError("cannot continue '" + path_ + "' after the checkpoint: copying it to '" +
                      partial_ + "' failed: " + std::strerror(error));
     }
+    if (how == 2)
+      continued_ = partial_;
     file_ = H5Fopen(partial_.c_str(), H5F_ACC_RDWR, access);
     if (file_ < 0)
       refuse("HDF5 cannot open it");
@@ -333,8 +337,9 @@ private:
     const hid_t file = std::exchange(file_, -1);
     if (file >= 0)
       H5Fclose(file);
-    removePartial();
-    throw RunError("cannot continue '" + path_ + "' after the checkpoint: " + why +
+    if (continued_ == path_)
+      removePartial(); // the copy
+    throw RunError("cannot continue '" + continued_ + "' after the checkpoint: " + why +
                    "; it is left as it was: move it away, or restart into another --out");
   }
 
@@ -375,6 +380,7 @@ private:
   }
 
   std::string path_, partial_;
+  std::string continued_ = path_; ///< a restart's earlier file
   hid_t file_ = -1;
   std::uint64_t frames_ = 0;
 };
