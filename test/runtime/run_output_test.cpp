@@ -75,6 +75,22 @@ TEST(RunOutput, WritesFramesSeriesAndDump) {
   EXPECT_EQ(slurp(dir.path / "dump.csv"), "id,x,y\n0,1,2\n");
 }
 
+TEST(RunOutput, TheSeriesIsOnDiskAfterEveryFrame) {
+  TempDir dir;
+  RunOptions o;
+  o.outDir = dir.path.string();
+  RunOutput out(o, "sim");
+  out.writeFrame(0, tinyFrame());
+  EXPECT_NE(slurp(dir.path / "sim.pvd").find("sim_000000.vtp"), std::string::npos);
+  out.writeFrame(5, tinyFrame());
+  EXPECT_NE(slurp(dir.path / "sim.pvd").find("sim_000005.vtp"), std::string::npos);
+  // A restart from a checkpoint after step 0 lists only frame 0 until it writes.
+  RunOutput restarted(o, "sim");
+  restarted.continueSeries({{0, 0.0, "sim_000000.vtp"}}, false);
+  EXPECT_EQ(slurp(dir.path / "sim.pvd").find("sim_000005.vtp"), std::string::npos);
+  EXPECT_NE(slurp(dir.path / "sim.pvd").find("sim_000000.vtp"), std::string::npos);
+}
+
 TEST(RunOutput, CsvFormatWritesCsvFrames) {
   TempDir dir;
   RunOptions o;
@@ -106,6 +122,8 @@ TEST(RunOutput, NamesWithASlashAreRefused) {
   EXPECT_EQ(checkOutputName(".."), ""); // "out/.._000001.vtp" is still inside
   for (const char *name : {"../x", "/abs/x", "sub/x"})
     EXPECT_NE(checkOutputName(name).find("is not a plain file name"), std::string::npos) << name;
+  EXPECT_EQ(checkOutputName("a&<b>\"c'\n,d"), ""); // escaped where written
+  EXPECT_NE(checkOutputName("a\x01"), "");
   TempDir dir;
   RunOptions o;
   o.outDir = (dir.path / "out").string();

@@ -121,6 +121,24 @@ TEST(Writers, PvdListsEveryDataset) {
   EXPECT_NE(out.str().find("timestep=\"10\" part=\"0\" file=\"a_000010.vtp\""), std::string::npos);
 }
 
+TEST(Writers, NamesAreEscapedInXmlAndQuotedInCsv) {
+  EXPECT_EQ(xmlText("a&b<c>d\"e'f\tg\nh"), "a&amp;b&lt;c&gt;d&quot;e&apos;f&#9;g&#10;h");
+  EXPECT_EQ(xmlText(std::string("x\x01y")), "x\xEF\xBF\xBDy");
+  EXPECT_EQ(csvField("plain name"), "plain name");
+  EXPECT_EQ(csvField("a,b\"c\nd"), "\"a,b\"\"c\nd\"");
+  std::ostringstream pvd;
+  writePvd({{0.0, "a&<b>\"_000000.vtp"}}, pvd);
+  EXPECT_NE(pvd.str().find("file=\"a&amp;&lt;b&gt;&quot;_000000.vtp\""), std::string::npos);
+  Frame f = sampleFrame();
+  f.columns[2].name = "d,\"<n>";
+  std::ostringstream csv, vtp;
+  writeCsv(f, csv);
+  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')),
+            "id,x,y,vx,vy,\"d,\"\"<n>\",pressure_x,pressure_y");
+  writeVtp(f, vtp);
+  EXPECT_NE(vtp.str().find("Name=\"d,&quot;&lt;n&gt;\""), std::string::npos);
+}
+
 TEST(Frame, FindsTheFirstNonFiniteValue) {
   Frame f = sampleFrame();
   EXPECT_EQ(findNonFinite(f), "");

@@ -128,9 +128,13 @@ std::string partialPath(const std::string &path) {
   return partialPath(path, std::uint64_t(::getpid()));
 }
 
-void removeStalePartials(const std::string &folder) {
+namespace {
+
+/// The partial files in `folder` of processes of this host that no longer
+/// run, with the name each is the partial file of.
+std::vector<std::pair<fs::path, std::string>> stalePartials(const std::string &folder) {
   std::error_code ec;
-  std::vector<fs::path> stale;
+  std::vector<std::pair<fs::path, std::string>> stale;
   for (const fs::directory_entry &d : fs::directory_iterator(folder, ec)) {
     const std::string name = d.path().filename().string();
     const std::size_t at = name.rfind(partialMark);
@@ -140,10 +144,35 @@ void removeStalePartials(const std::string &folder) {
     if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos)
       continue;
     if (::kill(pid_t(std::stol(pid)), 0) != 0 && errno == ESRCH)
-      stale.push_back(d.path());
+      stale.emplace_back(d.path(), name.substr(0, at));
   }
-  for (const fs::path &p : stale)
-    fs::remove(p, ec);
+  return stale;
+}
+
+} // namespace
+
+bool adoptStalePartial(const std::string &path) {
+  const fs::path target(path);
+  std::error_code ec;
+  fs::path newest;
+  fs::file_time_type newestTime;
+  for (const auto &[file, of] : stalePartials(target.parent_path().empty() ? "." : target.parent_path().string())) {
+    const fs::file_time_type t = fs::last_write_time(file, ec);
+    if (of == target.filename().string() && !ec && (newest.empty() || t > newestTime)) {
+      newest = file;
+      newestTime = t;
+    }
+  }
+  if (newest.empty())
+    return false;
+  fs::rename(newest, partialPath(path), ec);
+  return !ec;
+}
+
+void removeStalePartials(const std::string &folder) {
+  std::error_code ec;
+  for (const auto &[file, of] : stalePartials(folder))
+    fs::remove(file, ec);
 }
 
 } // namespace wash::detail

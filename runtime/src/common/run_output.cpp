@@ -9,6 +9,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -139,6 +140,14 @@ RunError outOfMemory(const std::string &what, std::uint64_t count, std::uint64_t
 }
 
 std::string checkOutputName(const std::string &name) {
+  // A control character but tab and line breaks has no XML form (the .pvd
+  // names every frame file).
+  if (std::any_of(name.begin(), name.end(), [](char c) {
+        return (unsigned char)c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\0';
+      }))
+    return "output file name '" + name +
+           "' holds a control character other than tab and line breaks, which the .pvd series "
+           "(XML) cannot name: change set_simulation_name or set_output_file_name";
   if (name.find('/') == std::string::npos && name.find('\0') == std::string::npos)
     return "";
   return "output file name '" + name +
@@ -164,6 +173,11 @@ RunOutput::RunOutput(const RunOptions &options, std::string baseName)
   // One run at a time per folder (a second is refused here, naming the first);
   // what a killed run was writing is then nobody's.
   locks_.push_back(std::make_unique<FolderLock>(options_.outDir, "output directory", "--out"));
+  // A restart continues the HDF5 series a killed run left in its partial file
+  // (this process, rank 0 under MPI, names the shared file): that one is kept.
+  const std::string h5 = (fs::path(options_.outDir) / (baseName_ + ".h5")).string();
+  if (!options_.restartPath.empty() && options_.format == OutputFormat::Hdf5 && !fs::exists(h5))
+    adoptStalePartial(h5);
   removeStalePartials(options_.outDir);
   // Checkpoints asked for, or a folder named for them: it is created and
   // checked now, not at the first checkpoint after an interval's work.
@@ -251,16 +265,10 @@ void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional
   checkFields(frame);
   const Columns columns = frameColumns(frame, options_.fields);
   if (options_.format == OutputFormat::Hdf5) {
-    if (!hdf5_) {
-      if (!hdf5Opener())
-        throw RunError("--format hdf5: this program has no HDF5 library linked");
-      const std::string h5 = (fs::path(options_.outDir) / (baseName_ + ".h5")).string();
-      // One file, written by every process: named by rank 0's process id.
-      const Processes *p = spread();
-      const std::uint64_t owner = p ? p->allgather(std::uint64_t(::getpid()))[0] : ::getpid();
-      hdf5_ = hdf5Opener()(h5, partialPath(h5, owner));
-    }
+    if (!hdf5_)
+      openHdf5(/*restart=*/false);
     hdf5_->write(step, time.value_or(0.0), frame, hdf5Datasets(columns));
+    written_.push_back({step, time.value_or(0.0), baseName_ + ".h5"});
     return;
   }
   const VtpOptions vtp{.ascii = options_.vtkAscii, .time = time, .typeNames = frame.typeNames};
@@ -281,20 +289,72 @@ void RunOutput::writeFrame(std::uint64_t step, const Frame &frame, std::optional
     writeFile(path, [&](std::ostream &out) { writeCsv(frame, columns, out); });
   written_.push_back({step, time.value_or(0.0), file});
   seriesByTime_ |= time && seriesByTime;
+  // After every frame, so that a run killed outright leaves a series of the
+  // frames it completed.
+  if (root_ && options_.format == OutputFormat::Vtk)
+    writeSeries();
+}
+
+void RunOutput::writeSeries() const {
+  std::string path = (fs::path(options_.outDir) / (baseName_ + ".pvd")).string();
+  std::vector<std::pair<double, std::string>> series;
+  for (const Written &w : written_)
+    series.emplace_back(seriesByTime_ ? w.time : double(w.step), w.file);
+  writeFile(path, [&](std::ostream &out) { writePvd(series, out); });
+}
+
+void RunOutput::openHdf5(bool restart) {
+  if (!hdf5Opener())
+    throw RunError("--format hdf5: this program has no HDF5 library linked");
+  const std::string h5 = (fs::path(options_.outDir) / (baseName_ + ".h5")).string();
+  std::vector<Hdf5Step> keep;
+  if (restart)
+    for (const Written &w : written_)
+      keep.push_back({w.step, w.time});
+  // One file, written by every process: named by rank 0's process id.
+  const Processes *p = spread();
+  const std::string partial =
+      partialPath(h5, p ? p->allgather(std::uint64_t(::getpid()))[0] : ::getpid());
+  if (!keep.empty() && root_ && !options_.quiet && !fs::exists(h5)) {
+    if (fs::exists(partial))
+      std::printf("wash: continuing the partial file of %s that a killed run left\n", h5.c_str());
+    else
+      std::printf("wash: no %s to continue: the restarted series starts at Step#0, with the "
+                  "frames after the checkpoint\n",
+                  h5.c_str());
+  }
+  hdf5_ = hdf5Opener()(h5, partial, keep);
+}
+
+void RunOutput::continueSeries(std::vector<Written> written, bool seriesByTime) {
+  // The frames of this format only (a checkpoint of a run with another
+  // --format names other files).
+  const std::string suffix = options_.format == OutputFormat::Hdf5  ? ".h5"
+                             : options_.format == OutputFormat::Vtk ? ".vtp"
+                                                                    : ".csv";
+  written_.clear();
+  for (Written &w : written)
+    if (w.file.size() >= suffix.size() &&
+        w.file.compare(w.file.size() - suffix.size(), suffix.size(), suffix) == 0)
+      written_.push_back(std::move(w));
+  seriesByTime_ = seriesByTime;
+  if (options_.format == OutputFormat::Hdf5)
+    openHdf5(/*restart=*/true);
+  else if (root_ && options_.format == OutputFormat::Vtk)
+    writeSeries(); // the frames past the checkpoint are no longer in it
+}
+
+void RunOutput::closeSeries() {
+  if (!hdf5_)
+    return;
+  hdf5_->close();
+  hdf5_.reset();
 }
 
 void RunOutput::finish(const Frame &finalFrame) {
-  if (hdf5_) {
-    hdf5_->close();
-    hdf5_.reset();
-  }
-  if (root_ && options_.format == OutputFormat::Vtk && !written_.empty()) {
-    std::string path = (fs::path(options_.outDir) / (baseName_ + ".pvd")).string();
-    std::vector<std::pair<double, std::string>> series;
-    for (const Written &w : written_)
-      series.emplace_back(seriesByTime_ ? w.time : double(w.step), w.file);
-    writeFile(path, [&](std::ostream &out) { writePvd(series, out); });
-  }
+  closeSeries();
+  if (root_ && options_.format == OutputFormat::Vtk && !written_.empty())
+    writeSeries();
   if (options_.dumpPath.empty())
     return;
   const Processes *p = spread();

@@ -27,6 +27,37 @@ std::string_view exact(double v, Text &buf) {
 
 } // namespace
 
+std::string xmlText(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    const char *reference = c == '&'                  ? "&amp;"
+                            : c == '<'                ? "&lt;"
+                            : c == '>'                ? "&gt;"
+                            : c == '"'                ? "&quot;"
+                            : c == '\''               ? "&apos;"
+                            : c == '\t'               ? "&#9;"
+                            : c == '\n'               ? "&#10;"
+                            : c == '\r'               ? "&#13;"
+                            : (unsigned char)c < 0x20 ? "\xEF\xBF\xBD" // U+FFFD
+                                                      : nullptr;
+    if (reference)
+      out += reference;
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::string csvField(std::string_view field) {
+  if (field.find_first_of(",\"\n\r") == std::string_view::npos)
+    return std::string(field);
+  std::string out = "\"";
+  for (char c : field)
+    out += c == '"' ? "\"\"" : std::string(1, c);
+  return out + '"';
+}
+
 Columns dumpColumns(const Frame &frame) {
   Columns columns;
   for (const Column &column : frame.columns)
@@ -56,7 +87,7 @@ void writeCsvHeader(const Columns &columns, std::ostream &out) {
   out << "id";
   for (const Column *column : columns)
     for (const std::string &h : csvHeaders(*column))
-      out << ',' << h;
+      out << ',' << csvField(h);
   out << '\n';
 }
 
@@ -90,7 +121,7 @@ template <> const char *vtkType<std::int64_t>() { return "Int64"; }
 
 /// The opening tag of a DataArray, up to its format attributes.
 template <typename T> void openArray(std::ostream &out, const std::string &name, int components) {
-  out << "        <DataArray type=\"" << vtkType<T>() << "\" Name=\"" << name << "\"";
+  out << "        <DataArray type=\"" << vtkType<T>() << "\" Name=\"" << xmlText(name) << "\"";
   if (components)
     out << " NumberOfComponents=\"" << components << "\"";
 }
@@ -208,7 +239,7 @@ void writeVtp(std::uint64_t n, const std::vector<VtpArray> &arrays, const VtpOpt
           << exact(*options.time, buf) << "</DataArray>\n";
     // A typed simulation: type_<name> holds the index its "type" column uses.
     for (std::size_t t = 0; t < options.typeNames.size(); ++t)
-      out << "      <DataArray type=\"Int64\" Name=\"type_" << options.typeNames[t]
+      out << "      <DataArray type=\"Int64\" Name=\"type_" << xmlText(options.typeNames[t])
           << "\" NumberOfTuples=\"1\" format=\"ascii\">" << t << "</DataArray>\n";
     out << "    </FieldData>\n";
   }
@@ -282,8 +313,8 @@ void writePvd(const std::vector<std::pair<double, std::string>> &datasets, std::
       << "  <Collection>\n";
   Text buf;
   for (const auto &[time, file] : datasets)
-    out << "    <DataSet timestep=\"" << exact(time, buf) << "\" part=\"0\" file=\"" << file
-        << "\"/>\n";
+    out << "    <DataSet timestep=\"" << exact(time, buf) << "\" part=\"0\" file=\""
+        << xmlText(file) << "\"/>\n";
   out << "  </Collection>\n</VTKFile>\n";
 }
 

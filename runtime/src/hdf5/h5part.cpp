@@ -56,7 +56,7 @@ int rankOf() {
 
 class H5PartSeries final : public Hdf5Series {
 public:
-  H5PartSeries(std::string path, std::string partial)
+  H5PartSeries(std::string path, std::string partial, const std::vector<Hdf5Step> &keep)
       : path_(std::move(path)), partial_(std::move(partial)) {
     // No library shutdown at exit: after a failed write (a full disk) it
     // crashes on what the failure left; close() closes the file of a run
@@ -69,6 +69,8 @@ public:
     H5Pset_all_coll_metadata_ops(access, true);
     H5Pset_coll_metadata_write(access, true);
 #endif
+    if (!keep.empty() && continueFrom(keep, access))
+      return;
     errno = 0;
     file_ = H5Fcreate(partial_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
     if (file_ < 0)
@@ -247,6 +249,107 @@ private:
       fail("write the dataset " + name);
   }
 
+  /// A restart into the folder of the run it continues: `partial` a copy of
+  /// `path` whose groups are `keep` (those after them dropped), the next
+  /// group after them. Without `path`, the `partial` a killed run left is
+  /// continued in place (never truncated). False where there is neither.
+  bool continueFrom(const std::vector<Hdf5Step> &keep, hid_t access) {
+    // One answer for every rank: rank 0's (it copies the file).
+    int how = 0; // 1: copied; 2: the partial file continued; -1: copying failed
+    int error = 0;
+    if (rankOf() == 0 && std::filesystem::exists(path_)) {
+      std::error_code ec;
+      std::filesystem::copy_file(path_, partial_, std::filesystem::copy_options::overwrite_existing,
+                                 ec);
+      how = ec ? -1 : 1;
+      error = ec.value();
+    } else if (rankOf() == 0 && std::filesystem::exists(partial_))
+      how = 2;
+#ifdef WASH_HDF5_PARALLEL
+    int answer[2] = {how, error};
+    MPI_Bcast(answer, 2, MPI_INT, 0, MPI_COMM_WORLD);
+    how = answer[0];
+    error = answer[1];
+#endif
+    if (how == 0)
+      return false;
+    if (how < 0) {
+      removePartial();
+      throw RunError("cannot continue '" + path_ + "' after the checkpoint: copying it to '" +
+                     partial_ + "' failed: " + std::strerror(error));
+    }
+    if (how == 2)
+      continued_ = partial_;
+    file_ = H5Fopen(partial_.c_str(), H5F_ACC_RDWR, access);
+    if (file_ < 0)
+      refuse("HDF5 cannot open it");
+    for (std::size_t k = 0; k < keep.size(); ++k) {
+      const std::string name = "Step#" + std::to_string(k);
+      std::uint64_t step = 0;
+      double time = 0.0;
+      if (H5Lexists(file_, name.c_str(), H5P_DEFAULT) <= 0 ||
+          !readAttribute(name, "step", H5T_NATIVE_UINT64, &step) ||
+          !readAttribute(name, "time", H5T_NATIVE_DOUBLE, &time))
+        refuse("it has no group " + name + " with a step and a time, the checkpoint's frame " +
+               std::to_string(k) + " (iteration " + std::to_string(keep[k].step) + ")");
+      if (step != keep[k].step || time != keep[k].time) {
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "its %s is iteration %llu at t = %.17g, the checkpoint's frame %zu "
+                      "iteration %llu at t = %.17g",
+                      name.c_str(), (unsigned long long)step, time, k,
+                      (unsigned long long)keep[k].step, keep[k].time);
+        refuse(text);
+      }
+    }
+    // The groups after them: frames past the checkpoint, recomputed now.
+    H5G_info_t info;
+    if (H5Gget_info(file_, &info) < 0)
+      refuse("HDF5 cannot list its groups");
+    std::vector<std::string> past;
+    for (hsize_t i = 0; i < info.nlinks; ++i) {
+      char name[64] = "";
+      if (H5Lget_name_by_idx(file_, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof name,
+                             H5P_DEFAULT) < 0)
+        continue; // a longer name: no Step#k
+      unsigned long long k = 0;
+      int end = 0;
+      if (std::sscanf(name, "Step#%llu%n", &k, &end) == 1 && name[end] == '\0' && k >= keep.size())
+        past.push_back(name);
+    }
+    for (const std::string &name : past)
+      if (H5Ldelete(file_, name.c_str(), H5P_DEFAULT) < 0)
+        fail("remove the group " + name + " (past the checkpoint)");
+    frames_ = keep.size();
+    return true;
+  }
+
+  bool readAttribute(const std::string &group, const char *name, hid_t type, void *value) {
+    if (H5Aexists_by_name(file_, group.c_str(), name, H5P_DEFAULT) <= 0)
+      return false;
+    Handle attr(H5Aopen_by_name(file_, group.c_str(), name, H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    return attr.valid() && H5Aread(attr, type, value) >= 0;
+  }
+
+  /// The file to continue is not the series of the checkpoint: it is left as
+  /// it is (every rank is here: closing is collective).
+  [[noreturn]] void refuse(const std::string &why) {
+    const hid_t file = std::exchange(file_, -1);
+    if (file >= 0)
+      H5Fclose(file);
+    if (continued_ == path_)
+      removePartial(); // the copy
+    throw RunError("cannot continue '" + continued_ + "' after the checkpoint: " + why +
+                   "; it is left as it was: move it away, or restart into another --out");
+  }
+
+  void removePartial() {
+    if (rankOf() != 0)
+      return;
+    std::error_code ec;
+    std::filesystem::remove(partial_, ec);
+  }
+
   /// A failed write leaves the file in no state a reader can trust (the
   /// step being written is half there): it is closed and removed, like a
   /// frame that could not be written whole.
@@ -279,6 +382,7 @@ private:
   }
 
   std::string path_, partial_;
+  std::string continued_ = path_; ///< a restart's earlier file
   hid_t file_ = -1;
   std::uint64_t frames_ = 0;
 };
@@ -287,13 +391,15 @@ private:
 
 #ifdef WASH_HDF5_PARALLEL
 std::unique_ptr<Hdf5Series> openParallelHdf5Series(const std::string &path,
-                                                   const std::string &partial) {
-  return std::make_unique<H5PartSeries>(path, partial);
+                                                   const std::string &partial,
+                                                   const std::vector<Hdf5Step> &keep) {
+  return std::make_unique<H5PartSeries>(path, partial, keep);
 }
 #else
 std::unique_ptr<Hdf5Series> openSerialHdf5Series(const std::string &path,
-                                                 const std::string &partial) {
-  return std::make_unique<H5PartSeries>(path, partial);
+                                                 const std::string &partial,
+                                                 const std::vector<Hdf5Step> &keep) {
+  return std::make_unique<H5PartSeries>(path, partial, keep);
 }
 #endif
 

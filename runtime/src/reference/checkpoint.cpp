@@ -107,6 +107,7 @@ void checkpointAfterStep(Run &run, const State &s, std::uint64_t step) {
   if (run.checkpointDue() || stop)
     write(run, s, step);
   if (stop) {
+    run.stopped();
     const std::string folder = checkpointFolder(run.checkpointDir(), step);
     throw Interrupted("stopped by a signal after iteration " + std::to_string(step) +
                       "; checkpoint written to " + folder + " (continue with --restart " + folder +

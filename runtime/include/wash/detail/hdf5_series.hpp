@@ -39,17 +39,32 @@ public:
   virtual void close() = 0;
 };
 
+/// A frame of a series a restart continues: group Step#k holds iteration
+/// `step` at `time`.
+struct Hdf5Step {
+  std::uint64_t step = 0;
+  double time = 0.0;
+};
+
 /// Creates `partial` (renamed onto `path` by close()); throws RunError. A
 /// failed write throws RunError too, having removed `partial`.
+/// A restart passes the frames of the series before its checkpoint as `keep`:
+/// then if `path` exists, its groups Step#0 ... must be those frames (else
+/// RunError, `path` untouched); `partial` starts as a copy of it without the
+/// groups after them, and the next write is Step#<keep.size()>. Without
+/// `path`, or with `keep` empty, `partial` starts empty, at Step#0.
 using Hdf5Opener = std::unique_ptr<Hdf5Series> (*)(const std::string &path,
-                                                   const std::string &partial);
+                                                   const std::string &partial,
+                                                   const std::vector<Hdf5Step> &keep);
 /// The program's HDF5 flavour; null where its entry point set none (unit tests).
 Hdf5Opener &hdf5Opener();
 
 /// The two flavours, one per library built from h5part.cpp.
 std::unique_ptr<Hdf5Series> openSerialHdf5Series(const std::string &path,
-                                                 const std::string &partial);
+                                                 const std::string &partial,
+                                                 const std::vector<Hdf5Step> &keep);
 std::unique_ptr<Hdf5Series> openParallelHdf5Series(const std::string &path,
-                                                   const std::string &partial);
+                                                   const std::string &partial,
+                                                   const std::vector<Hdf5Step> &keep);
 
 } // namespace wash::detail

@@ -43,6 +43,12 @@ void checkWritableFolder(const std::string &folder, const std::string &what);
 std::string partialPath(const std::string &path, std::uint64_t owner);
 std::string partialPath(const std::string &path);
 
+/// Takes over the partial file of `path` that a process of this host left
+/// when it was killed (a restart continues an HDF5 series in it): renames the
+/// newest `<path>.wash-partial.<pid>` of a dead process to partialPath(path).
+/// Returns whether there was one.
+bool adoptStalePartial(const std::string &path);
+
 /// Removes the partial files in `folder` of processes of this host that no
 /// longer run (killed while writing); files of live processes are left.
 void removeStalePartials(const std::string &folder);

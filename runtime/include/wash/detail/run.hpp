@@ -127,6 +127,12 @@ public:
   /// The state after `step`, for the index (on the writing process).
   CheckpointState checkpointState(std::uint64_t step, std::uint32_t shards,
                                   std::uint64_t particles) const;
+  /// The run stops after a signal's checkpoint: its series closed as far as
+  /// it got (RunOutput::closeSeries). Collective under MPI.
+  void stopped() {
+    if (output_)
+      output_->closeSeries();
+  }
   /// Says where the checkpoint went and how long it took (writing run, not
   /// --quiet); that time is not counted as the steps'.
   void checkpointWritten(const std::string &folder, std::uint64_t step, double seconds);

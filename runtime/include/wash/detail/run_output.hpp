@@ -94,11 +94,14 @@ public:
                   bool seriesByTime = false);
   /// Writes the .pvd series (VTK) and the --dump file, if asked for.
   void finish(const Frame &finalFrame);
+  /// A run stopped by a signal: the HDF5 file as far as it got renamed into
+  /// place (collective under MPI); the .pvd is current after every frame.
+  void closeSeries();
 
   const std::string &directory() const { return options_.outDir; }
 
-  /// A frame of the .pvd series; a checkpoint saves the series so far, and a
-  /// restarted run continues it.
+  /// A frame of the series (.pvd, or groups of the HDF5 file); a checkpoint
+  /// saves the series so far, and a restarted run continues it.
   struct Written {
     std::uint64_t step;
     double time;
@@ -106,13 +109,17 @@ public:
   };
   const std::vector<Written> &written() const { return written_; }
   bool seriesByTime() const { return seriesByTime_; }
-  void continueSeries(std::vector<Written> written, bool seriesByTime) {
-    written_ = std::move(written);
-    seriesByTime_ = seriesByTime;
-  }
+  /// A restart: the frames of this format in `written` stay in the series;
+  /// the .pvd is rewritten to list them, the HDF5 file continued after them
+  /// (Hdf5Opener). Collective under MPI.
+  void continueSeries(std::vector<Written> written, bool seriesByTime);
 
 private:
   std::string framePath(std::uint64_t step) const;
+  /// The .pvd of the frames so far (rank 0, VTK).
+  void writeSeries() const;
+  /// Opens the HDF5 file, continuing the frames of written_ on a restart.
+  void openHdf5(bool restart);
   std::string probePath() const;
 
   std::vector<std::unique_ptr<FolderLock>> locks_; ///< the folders written (released last)

@@ -7,6 +7,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -64,6 +65,14 @@ void writeVtp(std::uint64_t points, const std::vector<VtpArray> &arrays, const V
 void appendCsvRow(std::string &line, std::uint64_t id, const double *values, std::size_t width);
 /// The CSV header row of `columns` (id first).
 void writeCsvHeader(const Columns &columns, std::ostream &out);
+
+/// `text` as XML attribute or element text: & < > " ' and tab, newline and
+/// carriage return as references, so that a reader gives back `text` exactly;
+/// other control characters, which XML 1.0 cannot hold, become U+FFFD.
+std::string xmlText(std::string_view text);
+/// `field` as one CSV field (RFC 4180): in double quotes, its quotes doubled,
+/// when it holds a comma, a quote or a line break; else as it is.
+std::string csvField(std::string_view field);
 
 /// A ParaView collection (.pvd) listing (time, file) pairs.
 void writePvd(const std::vector<std::pair<double, std::string>> &datasets, std::ostream &out);

@@ -81,6 +81,7 @@ void afterStep(const B &backend, Run &run, std::uint64_t step, std::uint64_t par
   if (run.checkpointDue() || stop)
     writeCheckpoint(backend, run, step, particles, columns);
   if (stop) {
+    run.stopped();
     const std::string folder = detail::checkpointFolder(run.checkpointDir(), step);
     throw detail::Interrupted(backend.rankIndex() != 0
                                   ? ""
