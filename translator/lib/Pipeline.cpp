@@ -34,7 +34,7 @@
 #include "llvm/Support/ErrorHandling.h"
 #include "llvm/Support/raw_ostream.h"
 
-#include <iostream>
+#include <sstream>
 #include <iterator>
 
 namespace wash::tr {
@@ -230,6 +230,17 @@ static bool passesCompileGate(const std::vector<GeneratedFile> &Files, const Mod
   return Errors.empty();
 }
 
+bool checkedStdout() {
+  llvm::outs().flush();
+  if (!llvm::outs().has_error())
+    return true;
+  llvm::errs() << "wash: error: cannot write to standard output: "
+               << llvm::outs().error().message() << "\n";
+  // Reported: the stream's destructor must not report it again.
+  llvm::outs().clear_error();
+  return false;
+}
+
 int runPipeline(const Options &Opts) {
   // Where to stop and print the model, if anywhere.
   std::optional<PassId> DumpAfter = Opts.DumpAfter;
@@ -260,8 +271,10 @@ int runPipeline(const Options &Opts) {
     return 1;
 
   if (DumpAfter) {
-    dumpModel(M, std::cout);
-    return std::cout.good() ? 0 : 1;
+    std::ostringstream Dump;
+    dumpModel(M, Dump);
+    llvm::outs() << Dump.str();
+    return checkedStdout() ? 0 : 1;
   }
   // Write: only once everything succeeded, so an error leaves no partial output.
   std::string Error = writeProject(Opts.OutputDir, Files);

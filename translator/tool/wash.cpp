@@ -45,8 +45,7 @@ static cl::opt<std::string>
               cl::callback([](const std::string &Name) {
                 if (Name == "help") {
                   outs() << wash::tr::passNames("\n") << "\n";
-                  outs().flush();
-                  std::exit(0);
+                  std::exit(wash::tr::checkedStdout() ? 0 : 1);
                 }
                 if (!wash::tr::findPass(Name)) {
                   errs() << "wash: error: unknown pass '" << Name
