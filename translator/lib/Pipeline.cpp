@@ -277,11 +277,14 @@ int runPipeline(const Options &Opts) {
     return checkedStdout() ? 0 : 1;
   }
   // Write: only once everything succeeded, so an error leaves no partial output.
-  std::string Error = writeProject(Opts.OutputDir, Files);
-  // The depfile last: a build that sees it sees the project it describes.
-  if (Error.empty() && !Opts.DepFile.empty())
-    Error =
-        writeDepfile(Opts.DepFile, Opts.OutputDir + "/" + Files[1].Name /* the program */, Inputs);
+  ProjectOutput Out;
+  Out.Dir = Opts.OutputDir;
+  Out.Files = std::move(Files);
+  Out.DepFile = Opts.DepFile;
+  Out.DepTarget = Opts.OutputDir + "/" + Out.Files[1].Name; // the program
+  Out.Inputs = std::move(Inputs);
+  Out.Force = Opts.Force;
+  std::string Error = writeOutputs(Out);
   if (!Error.empty()) {
     llvm::errs() << "wash: error: " << Error << "\n";
     return 1;
