@@ -14,6 +14,7 @@
 #include "wash/translator/Analysis/ResolveFields.h"
 #include "wash/translator/Analysis/SummariseAccesses.h"
 #include "wash/translator/Emit/CompileGate.h"
+#include "wash/translator/Emit/EmitCMakeLists.h"
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Frontend/CheckVariables.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
@@ -32,6 +33,7 @@
 
 #include "llvm/ADT/Twine.h"
 #include "llvm/Support/ErrorHandling.h"
+#include "llvm/Support/Path.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <sstream>
@@ -246,6 +248,16 @@ int runPipeline(const Options &Opts) {
   std::optional<PassId> DumpAfter = Opts.DumpAfter;
   if (!DumpAfter && Opts.DumpModel)
     DumpAfter = LastPass;
+  // The name reaches the generated project's files and build: refused now
+  // rather than by CMake or make later.
+  if (!DumpAfter)
+    if (std::string Why = unbuildableStemReason(llvm::sys::path::stem(Opts.Source).str());
+        !Why.empty()) {
+      llvm::errs() << "wash: error: cannot translate '" << Opts.Source << "': " << Why
+                   << ", which the generated project's build (CMake, make, Ninja) cannot "
+                      "name: rename the file (letters, digits, spaces and ._+-() are safe)\n";
+      return 1;
+    }
   Model M;
   M.SourceFile = Opts.Source;
   std::vector<GeneratedFile> Files;
