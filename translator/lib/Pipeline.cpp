@@ -36,8 +36,8 @@
 #include "llvm/Support/Path.h"
 #include "llvm/Support/raw_ostream.h"
 
-#include <sstream>
 #include <iterator>
+#include <sstream>
 
 namespace wash::tr {
 
@@ -236,8 +236,8 @@ bool checkedStdout() {
   llvm::outs().flush();
   if (!llvm::outs().has_error())
     return true;
-  llvm::errs() << "wash: error: cannot write to standard output: "
-               << llvm::outs().error().message() << "\n";
+  llvm::errs() << "wash: error: cannot write to standard output: " << llvm::outs().error().message()
+               << "\n";
   // Reported: the stream's destructor must not report it again.
   llvm::outs().clear_error();
   return false;

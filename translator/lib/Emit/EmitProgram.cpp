@@ -121,14 +121,12 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
 
   // The user's code keeps its own file name and line numbers (#line), so
   // compiler messages and CallSite locations point at the simulation source.
-  std::string Source =
-      generatedBanner(Plan) + lineDirective(1, absolute(Opts.Source)) + *Body;
+  std::string Source = generatedBanner(Plan) + lineDirective(1, absolute(Opts.Source)) + *Body;
   // The driver follows the user's code: their macros must not reach it.
   const std::vector<std::string> Hidden = macrosToHide(Includes);
   Source += hideMacros(Hidden);
   size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;
-  Source += lineDirective(NextLine, Plan.sourceName()) +
-            emitDriver(M, Plan, Callees);
+  Source += lineDirective(NextLine, Plan.sourceName()) + emitDriver(M, Plan, Callees);
 
   Files = {{Plan.headerName(), withMacrosHidden(emitStorageHeader(M, Plan), Hidden)},
            {Plan.sourceName(), Source},
@@ -137,8 +135,7 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
   // line numbers the same way.
   for (size_t I = 1; I < Rewritten->size(); ++I) {
     const RewrittenFile &F = (*Rewritten)[I];
-    Files.push_back(
-        {F.ProjectPath, generatedBanner(Plan) + lineDirective(1, F.Original) + F.Text});
+    Files.push_back({F.ProjectPath, generatedBanner(Plan) + lineDirective(1, F.Original) + F.Text});
   }
   return true;
 }

@@ -418,8 +418,7 @@ std::string depfileText(const std::string &Target, const std::vector<std::string
 std::string writeOutputs(const ProjectOutput &Out) {
   std::string Error;
   std::string Dir = followLink(Out.Dir, "output folder", Error);
-  std::string DepFile =
-      Out.DepFile.empty() ? "" : followLink(Out.DepFile, "depfile", Error);
+  std::string DepFile = Out.DepFile.empty() ? "" : followLink(Out.DepFile, "depfile", Error);
   if (!Error.empty())
     return Error;
   Existing E;
