@@ -14,6 +14,7 @@
 #include "wash/translator/Analysis/ResolveFields.h"
 #include "wash/translator/Analysis/SummariseAccesses.h"
 #include "wash/translator/Emit/CompileGate.h"
+#include "wash/translator/Emit/EmitCMakeLists.h"
 #include "wash/translator/Emit/EmitProgram.h"
 #include "wash/translator/Frontend/CheckVariables.h"
 #include "wash/translator/Frontend/CollectSimulation.h"
@@ -32,10 +33,11 @@
 
 #include "llvm/ADT/Twine.h"
 #include "llvm/Support/ErrorHandling.h"
+#include "llvm/Support/Path.h"
 #include "llvm/Support/raw_ostream.h"
 
-#include <iostream>
 #include <iterator>
+#include <sstream>
 
 namespace wash::tr {
 
@@ -230,11 +232,32 @@ static bool passesCompileGate(const std::vector<GeneratedFile> &Files, const Mod
   return Errors.empty();
 }
 
+bool checkedStdout() {
+  llvm::outs().flush();
+  if (!llvm::outs().has_error())
+    return true;
+  llvm::errs() << "wash: error: cannot write to standard output: " << llvm::outs().error().message()
+               << "\n";
+  // Reported: the stream's destructor must not report it again.
+  llvm::outs().clear_error();
+  return false;
+}
+
 int runPipeline(const Options &Opts) {
   // Where to stop and print the model, if anywhere.
   std::optional<PassId> DumpAfter = Opts.DumpAfter;
   if (!DumpAfter && Opts.DumpModel)
     DumpAfter = LastPass;
+  // The name reaches the generated project's files and build: refused now
+  // rather than by CMake or make later.
+  if (!DumpAfter)
+    if (std::string Why = unbuildableStemReason(llvm::sys::path::stem(Opts.Source).str());
+        !Why.empty()) {
+      llvm::errs() << "wash: error: cannot translate '" << Opts.Source << "': " << Why
+                   << ", which the generated project's build (CMake, make, Ninja) cannot "
+                      "name: rename the file (letters, digits, spaces and ._+-() are safe)\n";
+      return 1;
+    }
   Model M;
   M.SourceFile = Opts.Source;
   std::vector<GeneratedFile> Files;
@@ -260,15 +283,20 @@ int runPipeline(const Options &Opts) {
     return 1;
 
   if (DumpAfter) {
-    dumpModel(M, std::cout);
-    return std::cout.good() ? 0 : 1;
+    std::ostringstream Dump;
+    dumpModel(M, Dump);
+    llvm::outs() << Dump.str();
+    return checkedStdout() ? 0 : 1;
   }
   // Write: only once everything succeeded, so an error leaves no partial output.
-  std::string Error = writeProject(Opts.OutputDir, Files);
-  // The depfile last: a build that sees it sees the project it describes.
-  if (Error.empty() && !Opts.DepFile.empty())
-    Error =
-        writeDepfile(Opts.DepFile, Opts.OutputDir + "/" + Files[1].Name /* the program */, Inputs);
+  ProjectOutput Out;
+  Out.Dir = Opts.OutputDir;
+  Out.Files = std::move(Files);
+  Out.DepFile = Opts.DepFile;
+  Out.DepTarget = Opts.OutputDir + "/" + Out.Files[1].Name; // the program
+  Out.Inputs = std::move(Inputs);
+  Out.Force = Opts.Force;
+  std::string Error = writeOutputs(Out);
   if (!Error.empty()) {
     llvm::errs() << "wash: error: " << Error << "\n";
     return 1;

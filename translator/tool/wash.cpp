@@ -30,6 +30,11 @@ static cl::opt<std::string>
             cl::desc("Also write a depfile (Makefile syntax) naming every file the translation "
                      "read: the simulation and each header it includes"),
             cl::value_desc("file"), cl::cat(WashCategory));
+static cl::opt<bool>
+    Force("force",
+          cl::desc("Overwrite generated files that were edited since wash wrote them, or "
+                   "that wash did not write (never a file the translation reads)"),
+          cl::cat(WashCategory));
 static cl::opt<bool> NoCompileGate(
     "no-compile-gate",
     cl::desc("Write the generated project without first type-checking it (to debug wash)"),
@@ -45,8 +50,7 @@ static cl::opt<std::string>
               cl::callback([](const std::string &Name) {
                 if (Name == "help") {
                   outs() << wash::tr::passNames("\n") << "\n";
-                  outs().flush();
-                  std::exit(0);
+                  std::exit(wash::tr::checkedStdout() ? 0 : 1);
                 }
                 if (!wash::tr::findPass(Name)) {
                   errs() << "wash: error: unknown pass '" << Name
@@ -85,6 +89,7 @@ int main(int Argc, const char **Argv) {
   Opts.DepFile = DepFile;
   Opts.DumpModel = DumpModel;
   Opts.CompileGate = !NoCompileGate;
+  Opts.Force = Force;
   if (DumpAfter.getNumOccurrences())
     Opts.DumpAfter = wash::tr::findPass(DumpAfter);
   Opts.ExecutablePath = sys::fs::getMainExecutable(Argv[0], reinterpret_cast<void *>(&main));

@@ -10,5 +10,5 @@
 // DIR: wash: error: cannot read '{{.*}}': it is a directory
 // RUN: truncate -s 65M %t/huge.cpp
 // RUN: %expect_exit 1 %wash --dump-model %t/huge.cpp 2>&1 | FileCheck %s --check-prefix=HUGE
-// HUGE: wash: error: cannot read '{{.*}}huge.cpp': it is larger than 64 MB; a simulation file must be smaller
+// HUGE: wash: error: cannot read '{{.*}}huge.cpp': it is larger than 64 MB; wash reads no larger file
 // RUN: rm -rf %t

@@ -3,6 +3,7 @@
 #include "wash/translator/Emit/EmitStorage.h"
 
 #include <sstream>
+#include <string_view>
 
 namespace wash::tr {
 
@@ -29,6 +30,23 @@ static std::string cmakeArgument(const std::string &Text) {
     Out += C;
   }
   return Out + "\"";
+}
+
+std::string unbuildableStemReason(const std::string &Stem) {
+  if (Stem.empty())
+    return "its name has nothing before the extension";
+  for (char C : Stem) {
+    auto U = static_cast<unsigned char>(C);
+    if (C == '\t')
+      return "its name contains a tab";
+    if (C == '\n' || C == '\r')
+      return "its name contains a line break";
+    if (U < 0x20 || U == 0x7f)
+      return "its name contains a control character";
+    if (std::string_view("\";\\$:|[]").find(C) != std::string_view::npos)
+      return std::string("its name contains '") + C + "'";
+  }
+  return "";
 }
 
 std::string emitCMakeLists(const CodePlan &Plan, const std::vector<std::string> &PackageHints) {

@@ -49,6 +49,21 @@ std::string absolute(const std::string &Path) {
   return std::string(P);
 }
 
+/// `#line Line "File"`, File escaped as a C string: a folder may be named
+/// with a '"' or a backslash.
+std::string lineDirective(size_t Line, llvm::StringRef File) {
+  std::string Text = "#line " + std::to_string(Line) + " \"";
+  for (char C : File) {
+    if (C == '"' || C == '\\')
+      Text += '\\';
+    if (C == '\n')
+      Text += "\\n";
+    else
+      Text += C;
+  }
+  return Text + "\"\n";
+}
+
 /// The user's macros that could meet an identifier of the generated header
 /// or driver (not reserved names, NDEBUG or WASH_ settings, which configure
 /// rather than name things).
@@ -106,14 +121,12 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
 
   // The user's code keeps its own file name and line numbers (#line), so
   // compiler messages and CallSite locations point at the simulation source.
-  std::string Source =
-      generatedBanner(Plan) + "#line 1 \"" + absolute(Opts.Source) + "\"\n" + *Body;
+  std::string Source = generatedBanner(Plan) + lineDirective(1, absolute(Opts.Source)) + *Body;
   // The driver follows the user's code: their macros must not reach it.
   const std::vector<std::string> Hidden = macrosToHide(Includes);
   Source += hideMacros(Hidden);
   size_t NextLine = std::count(Source.begin(), Source.end(), '\n') + 2;
-  Source += "#line " + std::to_string(NextLine) + " \"" + Plan.sourceName() + "\"\n" +
-            emitDriver(M, Plan, Callees);
+  Source += lineDirective(NextLine, Plan.sourceName()) + emitDriver(M, Plan, Callees);
 
   Files = {{Plan.headerName(), withMacrosHidden(emitStorageHeader(M, Plan), Hidden)},
            {Plan.sourceName(), Source},
@@ -122,8 +135,7 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
   // line numbers the same way.
   for (size_t I = 1; I < Rewritten->size(); ++I) {
     const RewrittenFile &F = (*Rewritten)[I];
-    Files.push_back(
-        {F.ProjectPath, generatedBanner(Plan) + "#line 1 \"" + F.Original + "\"\n" + F.Text});
+    Files.push_back({F.ProjectPath, generatedBanner(Plan) + lineDirective(1, F.Original) + F.Text});
   }
   return true;
 }

@@ -1,6 +1,7 @@
 //===- Parse.cpp ----------------------------------------------------------===//
 #include "wash/translator/Frontend/Parse.h"
 #include "wash/translator/Frontend/DetectDimension.h"
+#include "wash/translator/Frontend/ReadableFiles.h"
 
 #include "clang/AST/ASTConsumer.h"
 #include "clang/Frontend/CompilerInstance.h"
@@ -25,9 +26,6 @@ using namespace clang;
 
 namespace wash::tr {
 namespace {
-
-/// The largest simulation file wash reads.
-constexpr uint64_t MaxSourceBytes = uint64_t(64) << 20;
 
 using Callback =
     std::function<void(ASTContext &, Diagnoser &, unsigned, const IncludeDirectives &)>;
@@ -129,23 +127,6 @@ unsigned definedDim(const std::vector<std::string> &Args) {
       Dim = A.consume_front("=") && A == "3" ? 3 : 2;
   }
   return Dim;
-}
-
-/// Why Source cannot be a simulation file ("" if it can be read): a device,
-/// FIFO or directory would make clang read forever or fail obscurely, and an
-/// unbounded file exhausts memory.
-std::string unreadableReason(const std::string &Source) {
-  llvm::sys::fs::file_status Status;
-  if (std::error_code EC = llvm::sys::fs::status(Source, Status))
-    return EC.message();
-  if (Status.type() == llvm::sys::fs::file_type::directory_file)
-    return "it is a directory";
-  if (Status.type() != llvm::sys::fs::file_type::regular_file)
-    return "it is not a regular file";
-  if (Status.getSize() > MaxSourceBytes)
-    return "it is larger than " + std::to_string(MaxSourceBytes >> 20) +
-           " MB; a simulation file must be smaller";
-  return "";
 }
 
 /// Limits on what clang's parser handles by recursion and that no bracket
@@ -269,7 +250,10 @@ bool parseSimulation(const Options &Opts, const Callback &OnAST) {
   std::vector<std::string> Flags = {"-std=c++20"};
   Flags.insert(Flags.end(), Opts.CompilerArgs.begin(), Opts.CompilerArgs.end());
   tooling::FixedCompilationDatabase DB(".", Flags);
-  tooling::ClangTool Tool(DB, {Opts.Source});
+  // Every file clang opens, each header included, passes the checks the
+  // simulation file did.
+  tooling::ClangTool Tool(DB, {Opts.Source}, std::make_shared<PCHContainerOperations>(),
+                          readableFilesOnly(llvm::vfs::getRealFileSystem()));
   // -x c++: a simulation is C++ whatever its file is called.
   std::vector<std::string> Baked = {"-x", "c++", "-resource-dir=" WASH_CLANG_RESOURCE_DIR,
                                     "-isystem", apiIncludeDir(Opts.ExecutablePath),

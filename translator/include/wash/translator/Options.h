@@ -38,6 +38,9 @@ struct Options {
   /// Type-check the generated code before writing it (--no-compile-gate
   /// turns it off, for debugging the translator).
   bool CompileGate = true;
+  /// --force: overwrite generated files that changed since wash wrote them,
+  /// or that wash did not write (never an input of the translation).
+  bool Force = false;
 };
 
 } // namespace wash::tr

@@ -10,4 +10,8 @@ namespace wash::tr {
 /// stdout after an error.
 int runPipeline(const Options &Opts);
 
+/// Flushes standard output; false, after a message, if any write to it
+/// failed (a full disk, a closed pipe), so that the exit status says so.
+bool checkedStdout();
+
 } // namespace wash::tr

@@ -13,4 +13,12 @@ namespace wash::tr {
 /// against the backend's CMake target, wash::<backend>.
 std::string emitCMakeLists(const CodePlan &Plan, const std::vector<std::string> &PackageHints);
 
+/// Why the generated project cannot be built if the simulation's file name
+/// without extension is Stem ("" if it can): the generated files, targets and
+/// object paths carry it, and no quoting gets a ';', a '$' (make expands
+/// '$(...)'), a ':', a '|', a '[' or ']', or a control character (tab, line
+/// break) through CMake, make and Ninja alike; a '"' or a backslash would
+/// end the C++ strings naming it.
+std::string unbuildableStemReason(const std::string &Stem);
+
 } // namespace wash::tr
