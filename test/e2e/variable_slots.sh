@@ -2,10 +2,10 @@
 # when the run starts (wash/backend/variables.hpp). Where the variable exists,
 # the reads see every write (a void kernel's) and the run ends as the
 # reference's; where main never added it, the read stops the run with the
-# reference's message, at the same file and line. (Not the same column: the
-# rewrite of the particle accesses before the call on its line moves it, as
-# it did before the slots. Nor the same path: the reference build names the
-# source relative to its build folder.)
+# reference's message, at the same file, line and column (the rewrite of the
+# particle accesses before the call on its line moves it: generated code
+# passes the call's CallSite as written). Not the same path: the reference
+# build names the source relative to its build folder.
 . "$(dirname "$0")/lib.sh"
 bin=$1
 shift
@@ -15,9 +15,9 @@ scene=variable_unadded
 
 expect_exit 0 "$bin/$scene-reference" add --quiet --dump reference.csv --out ref
 expect_exit 1 "$bin/$scene-reference" --quiet --out ref
-# "<scene>.cpp:<line>: error: <message>" from a run's output.
+# "<scene>.cpp:<line>:<column>: error: <message>" from a run's output.
 where() {
-  sed -n "s|^.*/\($scene\.cpp:[0-9]*\):[0-9]*: \(error: variable 'gain' was never added.*\)$|\1: \2|p" out.txt
+  sed -n "s|^.*/\($scene\.cpp:[0-9]*:[0-9]*\): \(error: variable 'gain' was never added.*\)$|\1: \2|p" out.txt
 }
 where >reference-error.txt
 [ -s reference-error.txt ] || { cat out.txt >&2; fail "the reference did not stop at the read"; }

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <tuple>
 
@@ -188,6 +189,10 @@ TEST(Box, WrapsIntoTheBoxAndLeavesInsideCoordinatesAlone) {
   EXPECT_EQ(box.wrap(-0.5, 0), 0.5);
   EXPECT_EQ(box.wrap(-1.0, 1), -1.0);
   EXPECT_EQ(box.wrap(1.0, 1), -1.0);
+  // Not finite: NaN, never a coordinate inside (the finite checks must see it).
+  EXPECT_TRUE(std::isnan(box.wrap(std::nan(""), 0)));
+  EXPECT_TRUE(std::isnan(box.wrap(INFINITY, 0)));
+  EXPECT_TRUE(std::isnan(box.wrap(-INFINITY, 1)));
   EXPECT_EQ(box.image(0.9, 0.1, 0), -1);
   EXPECT_EQ(box.image(0.1, 0.9, 0), 1);
   EXPECT_EQ(box.image(0.4, 0.1, 0), 0);

@@ -84,6 +84,16 @@ TEST(Options, BadInputIsRejectedWithAMessage) {
   expectError({"sim", "--keep-checkpoints", "0"}, "at least 1");
   expectError({"sim", "--checkpoint-dt", "0"}, "positive simulated time");
   expectError({"sim", "--restart="}, "expects a path");
+  expectError({"sim", "--steps", "18446744073709551616"}, "non-negative integer");
+  expectError({"sim", "--end-time", "1e400"}, "non-negative simulated time");
+  for (const char *bad : {"-1", "nan", "inf", "1e400", "3s"})
+    expectError({"sim", "--watchdog", bad}, "expects a non-negative number of seconds (0: off)");
+}
+
+TEST(Options, Watchdog) {
+  EXPECT_FALSE(parse({"sim"}).options.watchdog.has_value());
+  EXPECT_EQ(parse({"sim", "--watchdog", "0"}).options.watchdog, 0.0);
+  EXPECT_EQ(parse({"sim", "--watchdog=2.5"}).options.watchdog, 2.5);
 }
 
 TEST(Options, CheckpointOptions) {

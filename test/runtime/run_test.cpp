@@ -38,7 +38,10 @@ struct RunTest : ::testing::Test {
     set_influence_radius(0.5);
     set_max_iterations(4);
   }
-  void TearDown() override { std::filesystem::remove_all(out); }
+  void TearDown() override {
+    std::filesystem::remove_all(out);
+    detail::runStage() = {}; // a run that threw leaves its step (random_test reads it)
+  }
 };
 
 /// The message of the error f throws.
@@ -251,6 +254,36 @@ TEST_F(RunTest, TheEndTimeEndsTheRunAtTheIterationThatReachesIt) {
     run.endStep(step, [] { return detail::Frame{}; });
   EXPECT_EQ(run.steps(), 3u) << "0.2, 0.4, 0.6: the third step reaches 0.5";
   EXPECT_DOUBLE_EQ(get_time(), 0.6);
+}
+
+TEST_F(RunTest, ATimeThatStopsShortOfTheOnlyEndIsAnError) {
+  runSettings().maxIterations.reset();
+  programOptions().endTime = 1.0;
+  detail::Run run(serial2d, /*writes=*/false);
+  run.begin(0, [] { return detail::Frame{}; });
+  const std::string msg =
+      messageOf<detail::RunError>([&] { run.endStep(1, [] { return detail::Frame{}; }); });
+  EXPECT_NE(msg.find("at the end of step 1: the simulated time did not advance (t = 0, time "
+                     "step 0, never set) and the run ends only at t = 1: it would never end"),
+            std::string::npos)
+      << msg;
+  // A step too small for the time to notice is the same.
+  detail::simTime().time = 1e-3;
+  set_time_step(1e-30);
+  EXPECT_THROW(run.endStep(2, [] { return detail::Frame{}; }), detail::RunError);
+}
+
+TEST_F(RunTest, TimeOptionsPastTwoToThe53MultiplesAreErrors) {
+  EXPECT_EQ(detail::multiplesIn(0.5, 0.1, "--output-dt"), 5u);
+  EXPECT_EQ(detail::multiplesIn(0.0, 1e-300, "--output-dt"), 0u);
+  const std::string msg =
+      messageOf<detail::RunError>([] { detail::multiplesIn(0.01, 1e-22, "--output-dt"); });
+  EXPECT_NE(msg.find("multiples of --output-dt 1e-22, more than 2^53"), std::string::npos) << msg;
+  programOptions().outputDt = 1e-22;
+  detail::Run run(serial2d, /*writes=*/false);
+  run.begin(0, [] { return detail::Frame{}; });
+  set_time_step(0.01);
+  EXPECT_THROW(run.endStep(1, [] { return detail::Frame{}; }), detail::RunError);
 }
 
 TEST_F(RunTest, BadTimeStepsAreErrors) {

@@ -1,4 +1,5 @@
 #include <wash/mpi/comm.hpp>
+#include <wash/mpi/watchdog.hpp>
 
 #include <mpi.h>
 
@@ -30,12 +31,14 @@ template <typename T> std::vector<T> gatherAll(const std::vector<T> &local) {
   std::vector<T> all(total);
   MPI_Allgatherv(local.data(), n, type<T>(), all.data(), counts.data(), displs.data(), type<T>(),
                  MPI_COMM_WORLD);
+  progressed();
   return all;
 }
 
 template <typename T> T reduce(T v, MPI_Op op) {
   T out = 0;
   MPI_Allreduce(&v, &out, 1, type<T>(), op, MPI_COMM_WORLD);
+  progressed();
   return out;
 }
 
@@ -61,6 +64,7 @@ Traffic &traffic() {
 std::vector<std::size_t> alltoallCounts(const std::vector<std::size_t> &counts) {
   std::vector<std::uint64_t> out(counts.size()), in(counts.begin(), counts.end());
   MPI_Alltoall(in.data(), 1, MPI_UINT64_T, out.data(), 1, MPI_UINT64_T, MPI_COMM_WORLD);
+  progressed();
   return {out.begin(), out.end()};
 }
 
@@ -94,6 +98,7 @@ std::vector<char> alltoallv(const std::vector<char> &flat, const std::vector<std
   recv.resize(total);
   MPI_Alltoallv(flat.data(), sc.data(), sd.data(), MPI_BYTE, recv.data(), rc.data(), rd.data(),
                 MPI_BYTE, MPI_COMM_WORLD);
+  progressed();
   return recv;
 }
 
@@ -109,6 +114,7 @@ detail::ExactSum allreduceSum(const detail::ExactSum &local) {
   const detail::ExactSum::State mine = local.state();
   detail::ExactSum::State all{};
   MPI_Allreduce(mine.data(), all.data(), int(all.size()), MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+  progressed();
   traffic().sums += sizeof mine;
   detail::ExactSum total;
   total.merge(all);
@@ -133,6 +139,7 @@ public:
   std::vector<std::uint64_t> allgather(std::uint64_t value) const override {
     std::vector<std::uint64_t> all(static_cast<std::size_t>(ranks()));
     MPI_Allgather(&value, 1, MPI_UINT64_T, all.data(), 1, MPI_UINT64_T, comm_);
+    progressed();
     return all;
   }
   std::vector<char> request(int from) const override {
@@ -143,11 +150,13 @@ public:
     MPI_Get_count(&status, MPI_BYTE, &bytes);
     std::vector<char> message(static_cast<std::size_t>(bytes));
     MPI_Recv(message.data(), bytes, MPI_BYTE, from, dataTag, comm_, MPI_STATUS_IGNORE);
+    progressed();
     return message;
   }
   void answer(const std::vector<char> &message) const override {
     MPI_Recv(nullptr, 0, MPI_BYTE, 0, askTag, comm_, MPI_STATUS_IGNORE);
     MPI_Send(message.data(), toInt(message.size()), MPI_BYTE, 0, dataTag, comm_);
+    progressed();
   }
 
 private:

@@ -10,6 +10,7 @@
 #include <wash/detail/entry.hpp>
 #include <wash/detail/hdf5_series.hpp>
 #include <wash/mpi/comm.hpp>
+#include <wash/mpi/watchdog.hpp>
 
 #include <mpi.h>
 
@@ -17,8 +18,16 @@
 
 extern "C" int __real_main(int argc, char **argv);
 extern "C" int __wrap_main(int argc, char **argv) {
+  // --watchdog decides the thread level, before runProgram reads (and checks)
+  // every option.
+  std::optional<double> watchdog;
+  try {
+    watchdog = wash::detail::parseProgramOptions(argc, argv).options.watchdog;
+  } catch (const wash::detail::OptionError &) {
+  }
   int provided = 0;
-  MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+  MPI_Init_thread(&argc, &argv, wash::mpi::watchdogThreadLevel(watchdog), &provided);
+  wash::mpi::startWatchdog(watchdog, provided, argc > 0 ? argv[0] : "wash");
   if (wash::mpi::rank() != 0 && !std::freopen("/dev/null", "w", stdout))
     std::fprintf(stderr, "wash mpi: rank %d could not silence its standard output\n",
                  wash::mpi::rank());
@@ -29,6 +38,7 @@ extern "C" int __wrap_main(int argc, char **argv) {
   // A run stopped by a signal stopped on every rank, its checkpoint complete.
   if (status != 0 && status != wash::detail::interruptedExitStatus && wash::mpi::ranks() > 1)
     MPI_Abort(MPI_COMM_WORLD, status);
+  wash::mpi::stopWatchdog();
   MPI_Finalize();
   return status;
 }

@@ -26,6 +26,21 @@ public:
   }
 #endif
 
+  /// What current() would give at a call written in the user's source with
+  /// its expression starting at (startLine, startColumn) and its opening
+  /// parenthesis at (parenLine, parenColumn): generated code passes it, as
+  /// its rewrite moves the call.
+  static constexpr CallSite written(const char *file, unsigned startLine, unsigned startColumn,
+                                    unsigned parenLine, unsigned parenColumn) noexcept {
+#if defined(__clang__)
+    (void)parenLine, (void)parenColumn;
+    return CallSite(file, startLine, startColumn);
+#else
+    (void)startLine, (void)startColumn;
+    return CallSite(file, parenLine, parenColumn);
+#endif
+  }
+
   constexpr CallSite(const char *file, unsigned line, unsigned column) noexcept
       : file_(file), line_(line), column_(column) {}
 

@@ -29,6 +29,16 @@ double parseTime(const std::string &option, const std::string &text, bool positi
   return value;
 }
 
+double parseSeconds(const std::string &option, const std::string &text) {
+  double value = 0.0;
+  const char *end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value) || value < 0.0)
+    throw OptionError("option '" + option + "' expects a non-negative number of seconds (0: " +
+                      "off), got '" + text + "'");
+  return value;
+}
+
 std::vector<std::string> parseFields(const std::string &text) {
   std::vector<std::string> fields;
   std::size_t from = 0;
@@ -59,8 +69,8 @@ bool takesValue(const std::string &name) {
   return name == "--steps" || name == "--out" || name == "--output-every" || name == "--format" ||
          name == "--dump" || name == "--end-time" || name == "--output-dt" ||
          name == "--vtk-encoding" || name == "--fields" || name == "--checkpoint-every" ||
-         name == "--checkpoint-dt" || name == "--checkpoint-dir" ||
-         name == "--keep-checkpoints" || name == "--restart";
+         name == "--checkpoint-dt" || name == "--checkpoint-dir" || name == "--keep-checkpoints" ||
+         name == "--restart" || name == "--watchdog";
 }
 
 void apply(RunOptions &o, const std::string &name, const std::string &value) {
@@ -96,6 +106,8 @@ void apply(RunOptions &o, const std::string &name, const std::string &value) {
       throw OptionError("option '--keep-checkpoints' expects at least 1");
   } else if (name == "--restart")
     o.restartPath = value;
+  else if (name == "--watchdog")
+    o.watchdog = parseSeconds(name, value);
   if (value.empty() && (name == "--out" || name == "--dump" || name == "--checkpoint-dir" ||
                         name == "--restart"))
     throw OptionError("option '" + name + "' expects a path");
@@ -171,6 +183,9 @@ std::string usageText(const std::string &program) {
          "  --restart PATH     continue from a checkpoint (or a folder's newest complete\n"
          "                     one); iterations count from the start of the simulation\n"
          "                     (SIGTERM or SIGINT: finish the iteration, checkpoint, exit 75)\n"
+         "  --watchdog S       MPI: end the job when a rank stops answering for S\n"
+         "                     seconds (default: 10 times the longest wait between two\n"
+         "                     collective calls, at least 60); 0 = off\n"
          "  --quiet            no run header, progress line or summary\n"
          "  --help             print this text and exit\n"
          "  --                 pass everything after it to the simulation\n";

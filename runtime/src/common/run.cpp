@@ -52,12 +52,34 @@ void checkRule(const Translation &translated, const SearchRule &rule) {
                    "; call the neighbour-rule setting unconditionally in main");
 }
 
+std::string decimal(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", v);
+  return text;
+}
+
+} // namespace
+
+std::uint64_t multiplesIn(double time, double every, const char *option) {
+  const double multiples = std::floor(time / every);
+  // Past 2^53 neighbouring multiples are the same double: no frame or
+  // checkpoint time could be told from the next (and the count would not fit).
+  if (!(multiples < 0x1p53))
+    throw RunError("the simulated time t = " + decimal(time) + " is " + decimal(multiples) +
+                   " multiples of " + option + " " + decimal(every) +
+                   ", more than 2^53: no two of them can be told apart; give " + option +
+                   " a larger value");
+  return std::uint64_t(multiples);
+}
+
+namespace {
+
 /// Whether `time` reached the multiple `next` of `every` (then moves `next`
 /// beyond it: a long step may cross several, and counts once).
-bool crossed(double time, double every, std::uint64_t &next) {
+bool crossed(double time, double every, std::uint64_t &next, const char *option) {
   if (time < double(next) * every)
     return false;
-  next = std::max(next, std::uint64_t(std::floor(time / every)));
+  next = std::max(next, multiplesIn(time, every, option));
   while (double(next) * every <= time)
     ++next;
   return true;
@@ -99,17 +121,28 @@ bool Run::advanceTime(std::uint64_t step) {
   SimTime &t = simTime();
   if (std::string bad = checkTimeStep(t.step); !bad.empty())
     throw RunError("at the end of step " + std::to_string(step) + ": " + bad);
+  const double before = t.time;
   t.time += t.step;
+  // A run bounded only by its end time would never end.
+  if (t.time == before && endTime_ && steps_ == std::numeric_limits<std::uint64_t>::max() &&
+      !runSettings().stopRequested && !endTimeReached())
+    throw RunError("at the end of step " + std::to_string(step) + ": the simulated time did " +
+                   "not advance (t = " + decimal(t.time) + ", time step " + decimal(t.step) +
+                   (t.stepSet ? "" : ", never set") + ") and the run ends only at t = " +
+                   decimal(*endTime_) + ": it would never end; set a time step that advances " +
+                   "the time (wash::set_time_step, or a reduction into \"time_step\") or " +
+                   "give an iteration count (--steps N or wash::set_max_iterations)");
   return outputTimeCrossed();
 }
 
 bool Run::outputTimeCrossed() {
-  return outputDt_ && crossed(simTime().time, *outputDt_, nextOutput_);
+  return outputDt_ && crossed(simTime().time, *outputDt_, nextOutput_, "--output-dt");
 }
 
 void Run::noteCheckpoint(std::uint64_t step) {
   const RunOptions &o = programOptions();
-  const bool byTime = o.checkpointDt && crossed(simTime().time, *o.checkpointDt, nextCheckpoint_);
+  const bool byTime = o.checkpointDt &&
+                      crossed(simTime().time, *o.checkpointDt, nextCheckpoint_, "--checkpoint-dt");
   checkpointDue_ = byTime || (o.checkpointEvery && step % o.checkpointEvery == 0);
 }
 

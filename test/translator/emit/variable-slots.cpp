@@ -22,17 +22,19 @@ constexpr const char *gainName = "gain";
 double gain() { return wash::get_variable(gainName); }
 
 void Drift(wash::Particle &p) {
-  // SOURCE: {{^ +}}wash_gen::P.pos[p] = wash_gen::P.pos[p] + wash_gen::P.vel[p] * (wash::get_variable(wash_gen::var_speed) * gain())
+  // The rewrite moves the call on its line: its CallSite is written out, at
+  // the call's place in this file (start of the call, then parenthesis).
+  // SOURCE: {{^ +}}wash_gen::P.pos[p] = wash_gen::P.pos[p] + wash_gen::P.vel[p] * (wash::get_variable(wash_gen::var_speed, wash::CallSite::written(__FILE__, 28, 42, 28, 60)) * gain())
   p.set_pos(p.get_pos() + p.get_vel() * (wash::get_variable("speed") * gain()));
 }
 
 void Crowd(wash::Particle &p, const std::vector<wash::Particle> &ns) {
   double near = 0.0;
   for (const auto &n : ns)
-    // SOURCE: {{^ +}}near += ns.distance(n) * wash::get_variable(wash_gen::var706172742032);
+    // SOURCE: {{^ +}}near += ns.distance(n) * wash::get_variable(wash_gen::var706172742032, wash::CallSite::written(__FILE__, 35, 55, 35, 73));
     near += (p.get_pos() - n.get_pos()).magnitude() * wash::get_variable("part 2");
   const std::string name = p.get_density() > 1.0 ? "gain" : "speed";
-  // SOURCE: {{^ +}}wash_gen::P.density[p] = near + wash::get_variable(SPEED) + wash::get_variable(name)
+  // SOURCE: {{^ +}}wash_gen::P.density[p] = near + wash::get_variable(SPEED, wash::CallSite::written(__FILE__, 38, 24, 38, 42)) + wash::get_variable(name, wash::CallSite::written(__FILE__, 38, 52, 38, 70))
   p.set_density(near + wash::get_variable(SPEED) + wash::get_variable(name));
 }
 

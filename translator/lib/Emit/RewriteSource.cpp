@@ -102,6 +102,17 @@ public:
     return offsets(CharSourceRange::getTokenRange(Range));
   }
 
+  /// Whether an edit so far touches [From, To) of the file of `At`.
+  bool editedBetween(SourceLocation At, unsigned From, unsigned To) const {
+    FileID F = Files.rewritten(At);
+    if (F.isInvalid())
+      return false;
+    for (const auto &[Begin, Edit] : Edited[F])
+      if (Begin < To && Edit.first > From)
+        return true;
+    return false;
+  }
+
 private:
   std::pair<unsigned, unsigned> offsets(CharSourceRange Range) const {
     unsigned Begin = SM.getFileOffset(Range.getBegin());
@@ -244,9 +255,63 @@ public:
     case CallLowering::Keep:
       if (Call->Id == ApiCall::get_variable)
         lowerVariableRead(E);
+      pinCallSite(E);
       return true;
     }
     return true;
+  }
+
+  /// A kept call that leaves its CallSite to the default gets it written
+  /// out, where the compiler would have put it in the user's source: the
+  /// rewrite of accesses before it on its line moves its columns, and an
+  /// error it reports must name the same column on every build (g++ gives
+  /// the opening parenthesis, clang the start of the call's expression:
+  /// wash::CallSite::written picks). Not where an earlier argument is left
+  /// to its default too (the last one cannot be named alone).
+  void pinCallSite(const CallExpr *E) {
+    const unsigned N = E->getNumArgs();
+    if (!N || E->getBeginLoc().isMacroID() || E->getRParenLoc().isMacroID() ||
+        E->getCallee()->getEndLoc().isMacroID() || !isa<CXXDefaultArgExpr>(E->getArg(N - 1)))
+      return;
+    const auto *Site = E->getArg(N - 1)->getType()->getAsCXXRecordDecl();
+    if (!Site || Site->getName() != "CallSite")
+      return;
+    for (unsigned I = 0; I + 1 < N; ++I)
+      if (isa<CXXDefaultArgExpr>(E->getArg(I)))
+        return;
+    std::optional<Token> Paren =
+        Lexer::findNextToken(E->getCallee()->getEndLoc(), SM, Ctx.getLangOpts());
+    if (!Paren || !Paren->is(tok::l_paren))
+      return;
+    PresumedLoc Start = SM.getPresumedLoc(E->getBeginLoc());
+    PresumedLoc Open = SM.getPresumedLoc(Paren->getLocation());
+    if (Start.isInvalid() || Open.isInvalid() || !mayMove(E, Paren->getLocation()))
+      return;
+    replace(E->getRParenLoc(),
+            std::string(N > 1 ? ", " : "") + "wash::CallSite::written(__FILE__, " +
+                std::to_string(Start.getLine()) + ", " + std::to_string(Start.getColumn()) + ", " +
+                std::to_string(Open.getLine()) + ", " + std::to_string(Open.getColumn()) + "))");
+  }
+
+  /// Whether the rewrite may move the call `E` on its line: an edit before
+  /// its parenthesis on that line (the traversal goes left to right), or an
+  /// enclosing particle access, which is lowered after it.
+  bool mayMove(const CallExpr *E, SourceLocation Paren) {
+    const unsigned Open = SM.getFileOffset(Paren);
+    const unsigned Column = SM.getSpellingColumnNumber(E->getBeginLoc());
+    const unsigned LineStart = SM.getFileOffset(E->getBeginLoc()) - (Column - 1);
+    if (R.editedBetween(E->getBeginLoc(), LineStart, Open))
+      return true;
+    DynTypedNodeList Parents = Ctx.getParents(*E);
+    while (!Parents.empty()) {
+      if (const auto *Call = Parents[0].get<CXXMemberCallExpr>())
+        if (particleAccessor(Call->getMethodDecl()))
+          return true;
+      if (!Parents[0].get<Expr>())
+        return false;
+      Parents = Ctx.getParents(Parents[0]);
+    }
+    return false;
   }
 
   /// `get_variable("dt")` becomes `get_variable(wash_gen::var_dt)`, a read

@@ -23,11 +23,12 @@ struct Box {
   double length(int a) const { return hi[a] - lo[a]; }
 
   /// x wrapped into [lo, hi) on periodic axis a: x - L floor((x - lo) / L);
-  /// a coordinate already inside is returned unchanged.
+  /// a coordinate already inside is returned unchanged, and a non-finite one
+  /// becomes NaN (never lo: the finite checks must see it).
   double wrap(double x, int a) const {
     const double L = length(a);
     double r = x - L * std::floor((x - lo[a]) / L);
-    return r < hi[a] ? r : lo[a]; // rounding can land exactly on hi
+    return !(r >= hi[a]) ? r : lo[a]; // rounding can land exactly on hi
   }
 
   /// The image of coordinate xj (of particle j) to use as a neighbour of a

@@ -34,6 +34,7 @@ struct RunOptions {
   std::string checkpointDir;          ///< empty: <outDir>/checkpoints
   std::uint64_t keepCheckpoints = 2;  ///< --keep-checkpoints N (at least 1)
   std::string restartPath;            ///< --restart PATH (empty: a fresh run)
+  std::optional<double> watchdog;     ///< --watchdog SECONDS (MPI; 0: off; unset: default)
 };
 
 struct ParsedArgs {

@@ -54,6 +54,10 @@ struct Translation {
   std::string program = "";
 };
 
+/// How many multiples of `every` (a positive time option, named `option`)
+/// `time` holds; refused past 2^53, where they are no longer distinct.
+std::uint64_t multiplesIn(double time, double every, const char *option);
+
 class Run {
 public:
   /// Checks the settings against what the program was translated for. Only a
@@ -80,7 +84,8 @@ public:
     if (frameDue(0) || outputTimeCrossed())
       write(0, first);
     if (programOptions().checkpointDt) // multiples after the start time
-      nextCheckpoint_ = std::uint64_t(simTime().time / *programOptions().checkpointDt) + 1;
+      nextCheckpoint_ =
+          multiplesIn(simTime().time, *programOptions().checkpointDt, "--checkpoint-dt") + 1;
     runStage().step = 1;
     watchStopSignals();
     stepStart_ = Clock::now();

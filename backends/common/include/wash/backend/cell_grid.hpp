@@ -17,8 +17,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace wash::backend {
@@ -65,15 +67,15 @@ public:
       lo[a] = coordinate(least[a]);
       hi[a] = coordinate(most[a]);
     }
-    std::size_t cells = 1;
+    double span = 1.0; // as a double: the product may not fit an integer
     for (int a = 0; a < D; ++a) {
       lo_[a] = n ? lo[a] : 0;
       dims_[a] = n ? hi[a] - lo[a] + 1 : 1;
-      cells *= std::size_t(dims_[a]);
+      span *= n ? double(hi[a]) - double(lo[a]) + 1.0 : 1.0;
     }
-    if (cells > std::numeric_limits<Index>::max())
-      throw std::length_error("wash: the particles span more cells than the grid can index; "
-                              "is a particle far outside the others?");
+    if (!(span <= double(std::numeric_limits<Index>::max())))
+      throw std::length_error(tooManyCells(span, r));
+    const std::size_t cells = std::size_t(span);
     cell_.resize(n);
     WASH_OMP(parallel for if(n >= parallelMinimum) schedule(static))
     for (std::size_t p = 0; p < n; ++p) {
@@ -223,6 +225,18 @@ public:
   }
 
 private:
+  static std::string tooManyCells(double span, double r) {
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "wash: the particles span %.3g cells %.17g wide (from the lowest particle to "
+                  "the highest on each axis), more than the %.0f a backend's cell grid can index "
+                  "(docs/backends.md, \"Limits\"): use a larger influence radius or smoothing "
+                  "length, or keep the particles closer together (is one far outside the "
+                  "others?)",
+                  span, r, double(std::numeric_limits<Index>::max()));
+    return text;
+  }
+
   /// floor(q) into `whole`, and whether q lies farther than
   /// 1e-12 * (|q| + slack) from every integer; false for a NaN, infinite or
   /// huge q.

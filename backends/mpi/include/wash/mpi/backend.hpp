@@ -140,10 +140,11 @@ private:
     // that have some.
     const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
     domain_.setCellSize(largest > 0.0 ? largest : 1.0);
-    domain_.setLowestCell(lowestCell(P));
+    const typename Domain<D>::Cell lowest = lowestCell(P);
+    domain_.setLowestCell(lowest);
     std::vector<typename Domain<D>::Cell> cells(P.size());
     for (Index i = 0; i < P.size(); ++i)
-      cells[i] = domain_.cellOf(Vec<double, D>(P.pos[i]));
+      cells[i] = startCell(P.pos[i], lowest);
     domain_.balance(cells, double(P.size()));
     // Counted apart from the steps' migration: it happens once.
     const std::uint64_t before = traffic().migration;
@@ -153,15 +154,38 @@ private:
     return allreduceSum(std::uint64_t(halo_.owned.size()));
   }
 
-  /// Collective: the lowest cell coordinate of any rank's particles, by axis.
+  /// The cell that places a particle on the domain at the start: its
+  /// position's wrapped into the box on periodic axes (the generated code
+  /// wraps what the init kernels created only after distribute), and, on an
+  /// axis where it is not finite, `lowest` (the finite checks after
+  /// distribute name it, as on every backend).
+  template <typename PosT>
+  typename Domain<D>::Cell startCell(const PosT &pos,
+                                     const typename Domain<D>::Cell &lowest) const {
+    const ::wash::detail::Box &box = ::wash::detail::runSettings().box;
+    Vec<double, D> p(pos);
+    for (int a = 0; a < D; ++a)
+      if (box.defined && box.periodic[a] && std::isfinite(p.at(a)))
+        *p[a] = box.wrap(p.at(a), a);
+    typename Domain<D>::Cell c = domain_.cellOf(p);
+    for (int a = 0; a < D; ++a)
+      if (!std::isfinite(p.at(a)))
+        c[a] = lowest[a];
+    return c;
+  }
+
+  /// Collective: the lowest start cell coordinate of any rank's particles, by
+  /// axis (non-finite coordinates left out).
   template <typename Particles> typename Domain<D>::Cell lowestCell(const Particles &P) const {
     constexpr std::int64_t shift = std::int64_t(1) << 62; // cells to unsigned, order kept
     typename Domain<D>::Cell lowest;
     for (int a = 0; a < D; ++a) {
       std::uint64_t mine = ~std::uint64_t(0);
       for (Index i = 0; i < P.size(); ++i) {
-        const std::int64_t c = std::clamp<std::int64_t>(
-            domain_.cellOf(Vec<double, D>(P.pos[i]))[a], -shift, shift - 1);
+        if (!std::isfinite(double(P.pos[i].at(a))))
+          continue;
+        const std::int64_t c =
+            std::clamp<std::int64_t>(startCell(P.pos[i], {})[a], -shift, shift - 1);
         mine = std::min(mine, std::uint64_t(c + shift));
       }
       const std::uint64_t all = allreduceMin(mine);

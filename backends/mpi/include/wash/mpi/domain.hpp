@@ -22,7 +22,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace wash::mpi {
@@ -51,10 +53,17 @@ public:
   void setCellSize(double cellSize) { cellSize_ = cellSize; }
   double cellSize() const { return cellSize_; }
 
+  /// Clamped to +-2^62 (a non-finite coordinate to 0): a position no cell
+  /// holds still gets one, and the finite checks or keyOf name the problem.
   Cell cellOf(const Vec<double, D> &p) const {
     Cell c;
-    for (int a = 0; a < D; ++a)
-      c[a] = wash::detail::cellCoordinate(p.at(a), cellSize_);
+    for (int a = 0; a < D; ++a) {
+      const double q = p.at(a) / cellSize_;
+      c[a] = std::abs(q) < 0x1p62 ? wash::detail::cellCoordinate(p.at(a), cellSize_)
+             : q > 0.0            ? std::int64_t(1) << 62
+             : q < 0.0            ? -(std::int64_t(1) << 62)
+                                  : 0;
+    }
     return c;
   }
 
@@ -75,7 +84,7 @@ public:
     for (int a = 0; a < D; ++a) {
       std::int64_t u = c[a] - origin_[a];
       if (u < 0 || u >= (std::int64_t(1) << bits))
-        throw std::out_of_range("wash mpi: a particle is more than 2^19 cells from where the particles started");
+        throw std::out_of_range(tooFar(c, a));
       key |= spread(std::uint64_t(u)) << a;
     }
     return key;
@@ -219,6 +228,24 @@ private:
     nodes_[std::size_t(node)].below = belowChild;
     nodes_[std::size_t(node)].above = aboveChild;
     return node;
+  }
+
+  /// What keyOf says of a cell outside the curve, and what to change.
+  std::string tooFar(const Cell &c, int a) const {
+    const std::int64_t lowest = origin_[a] + offset / 2;
+    char text[512];
+    std::snprintf(
+        text, sizeof text,
+        "wash mpi: a particle is in cell %lld of axis %d (cells %.17g wide, it "
+        "starts at %.17g), %lld cells from cell %lld, the lowest any particle started in: "
+        "the MPI backend indexes 2^21 cells per axis, from 2^19 below that one to 3 x "
+        "2^19 above it (docs/backends.md, \"Limits\"); keep the particles within 2^19 cells "
+        "of one another (or inside a periodic box), or use a larger influence radius "
+        "or smoothing length",
+        static_cast<long long>(c[std::size_t(a)]), a, cellSize_,
+        double(c[std::size_t(a)]) * cellSize_, static_cast<long long>(c[std::size_t(a)] - lowest),
+        static_cast<long long>(lowest));
+    return text;
   }
 
   /// The 21 low bits of v, moved to every D-th bit.
