@@ -123,11 +123,18 @@ bool Run::advanceTime(std::uint64_t step) {
     throw RunError("at the end of step " + std::to_string(step) + ": " + bad);
   const double before = t.time;
   t.time += t.step;
-  // A run bounded only by its end time would never end.
-  if (t.time == before && endTime_ && steps_ == std::numeric_limits<std::uint64_t>::max() &&
-      !runSettings().stopRequested && !endTimeReached())
+  stuckSteps_ = t.time == before ? stuckSteps_ + 1 : 0;
+  // A run bounded only by its end time would never end: at once if nothing
+  // ever set a time step, else after a while (a step computed by a reduction
+  // may be 0 in the first steps: Sedov's is at step 1).
+  constexpr std::uint64_t stuckLimit = 100;
+  if (stuckSteps_ && (!t.stepSet || stuckSteps_ >= stuckLimit) && endTime_ &&
+      steps_ == std::numeric_limits<std::uint64_t>::max() && !runSettings().stopRequested &&
+      !endTimeReached())
     throw RunError("at the end of step " + std::to_string(step) + ": the simulated time did " +
-                   "not advance (t = " + decimal(t.time) + ", time step " + decimal(t.step) +
+                   "not advance" +
+                   (t.stepSet ? " in " + std::to_string(stuckSteps_) + " steps" : std::string()) +
+                   " (t = " + decimal(t.time) + ", time step " + decimal(t.step) +
                    (t.stepSet ? "" : ", never set") + ") and the run ends only at t = " +
                    decimal(*endTime_) + ": it would never end; set a time step that advances " +
                    "the time (wash::set_time_step, or a reduction into \"time_step\") or " +

@@ -204,6 +204,7 @@ private:
   std::optional<double> endTime_, outputDt_;
   std::uint64_t nextOutput_ = 0;     ///< the multiple of outputDt_ the next time frame waits for
   std::uint64_t nextCheckpoint_ = 0; ///< the same for --checkpoint-dt
+  std::uint64_t stuckSteps_ = 0;     ///< steps in a row that left the time where it was
   bool checkpointDue_ = false;
   std::uint64_t firstStep_ = 1;
   std::uint64_t lastOnlyFrame_ = 0; ///< a step whose frame was written only as the last
