@@ -53,24 +53,11 @@ run() {
   done
   fail "$1 wrote no frames: $(cat run.txt)"
 }
-# asleep PID: whether its one thread is in the kernel's sleep (clock_nanosleep
-# or nanosleep) rather than writing.
-asleep() {
-  local call
-  read -r call _ <"/proc/$1/syscall" || return 1
-  [ "$call" = 230 ] || [ "$call" = 35 ]
-}
 
 for name in reference serial; do
   [ -x "$bin/sim_time-$name" ] || continue
   run "$name" "$name-kill"
-  for _ in $(seq 500); do
-    kill -STOP "$pid"
-    asleep "$pid" && break
-    kill -CONT "$pid"
-    sleep 0.003
-  done
-  kill -KILL "$pid"
+  kill_while_asleep "$pid"
   wait "$pid" 2>/dev/null
   check "$name-kill"
 

@@ -34,13 +34,6 @@ for name in a:
             sys.exit(f"{name}/{d} differs")
 PY
 }
-# asleep PID: whether its one thread is in the kernel's sleep (clock_nanosleep
-# or nanosleep) rather than writing.
-asleep() {
-  local call
-  read -r call _ <"/proc/$1/syscall" || return 1
-  [ "$call" = 230 ] || [ "$call" = 35 ]
-}
 # same_frames A B: every frame file and .pvd of A is in B, byte for byte.
 same_frames() {
   local f n=0
@@ -111,13 +104,7 @@ for name in "${runs[@]}"; do
       [ "$(ls "$name-kill/checkpoints" 2>/dev/null | grep -vc partial)" -ge 2 ] && break
       sleep 0.05
     done
-    for _ in $(seq 500); do
-      kill -STOP "$pid"
-      asleep "$pid" && break
-      kill -CONT "$pid"
-      sleep 0.003
-    done
-    kill -KILL "$pid"
+    kill_while_asleep "$pid"
     wait "$pid" 2>/dev/null
     [ ! -e "$name-kill/sim_time.h5" ] || fail "$name: a killed run left sim_time.h5"
     k=$(ls "$name-kill/checkpoints" | grep -v partial | tail -1)

@@ -22,3 +22,18 @@ expect_exit() {
 
 # expect_in FILE TEXT: FILE contains TEXT.
 expect_in() { grep -qF -- "$2" "$1" || { cat "$1" >&2; fail "'$2' not in $1"; }; }
+
+# kill_while_asleep PID: SIGKILL PID while its one thread sleeps in the kernel
+# (clock_nanosleep or nanosleep, the scenes' slow kernels), never mid-write:
+# a kill test then checks what a kill leaves, not a torn write. Stops it and
+# looks, up to 500 times, then kills it anyway.
+kill_while_asleep() {
+  local call
+  for _ in $(seq 500); do
+    kill -STOP "$1"
+    read -r call _ <"/proc/$1/syscall" && { [ "$call" = 230 ] || [ "$call" = 35 ]; } && break
+    kill -CONT "$1"
+    sleep 0.003
+  done
+  kill -KILL "$1"
+}
