@@ -168,8 +168,8 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
 
   // Analyse: facts about fields and kernels.
-  storeAccessSets(M, summariseAccesses(M.Kernels, M.searchesBySmoothingLength(),
-                                          M.Sim.SymmetricSupport));
+  storeAccessSets(
+      M, summariseAccesses(M.Kernels, M.searchesBySmoothingLength(), M.Sim.SymmetricSupport));
   if (Stop(PassId::SummariseAccesses))
     return;
   storeFields(M, resolveFields(M.Sim.Dimension, M.Forces, M.Kernels, M.typed()));

@@ -79,7 +79,8 @@ std::vector<char> alltoallv(const std::vector<std::vector<char>> &send,
   return alltoallv(flat, sendBytes, recvBytes, counter);
 }
 
-std::vector<char> alltoallv(const std::vector<char> &flat, const std::vector<std::size_t> &sendBytes,
+std::vector<char> alltoallv(const std::vector<char> &flat,
+                            const std::vector<std::size_t> &sendBytes,
                             const std::vector<std::size_t> &recvBytes, std::uint64_t &counter) {
   const int n = ranks(), me = rank();
   std::vector<int> sc(n), sd(n), rc(n), rd(n);

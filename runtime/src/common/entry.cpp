@@ -62,8 +62,8 @@ int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
   } catch (...) {
     // `throw 42;` in a kernel: no message to print, but the type and when.
     std::fflush(stdout);
-    std::fprintf(stderr, "%s: error: an exception of type '%s' thrown %s\n",
-                 program.c_str(), currentExceptionType().c_str(), runStage().describe().c_str());
+    std::fprintf(stderr, "%s: error: an exception of type '%s' thrown %s\n", program.c_str(),
+                 currentExceptionType().c_str(), runStage().describe().c_str());
     return 1;
   }
 }

@@ -12,8 +12,7 @@ std::uint64_t parseCount(const std::string &option, const std::string &text) {
   const char *end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (text.empty() || ec != std::errc() || ptr != end)
-    throw OptionError("option '" + option + "' expects a non-negative integer, got '" + text +
-                      "'");
+    throw OptionError("option '" + option + "' expects a non-negative integer, got '" + text + "'");
   return value;
 }
 
@@ -108,8 +107,8 @@ void apply(RunOptions &o, const std::string &name, const std::string &value) {
     o.restartPath = value;
   else if (name == "--watchdog")
     o.watchdog = parseSeconds(name, value);
-  if (value.empty() && (name == "--out" || name == "--dump" || name == "--checkpoint-dir" ||
-                        name == "--restart"))
+  if (value.empty() &&
+      (name == "--out" || name == "--dump" || name == "--checkpoint-dir" || name == "--restart"))
     throw OptionError("option '" + name + "' expects a path");
 }
 
@@ -158,7 +157,8 @@ ParsedArgs parseProgramOptions(int argc, char **argv) {
 }
 
 std::string usageText(const std::string &program) {
-  return "usage: " + program + " [wash options] [simulation arguments]\n"
+  return "usage: " + program +
+         " [wash options] [simulation arguments]\n"
          "\n"
          "wash options (removed before the simulation's main sees argv):\n"
          "  --steps N          run N iterations (overrides set_max_iterations)\n"

@@ -156,7 +156,8 @@ bool adoptStalePartial(const std::string &path) {
   std::error_code ec;
   fs::path newest;
   fs::file_time_type newestTime;
-  for (const auto &[file, of] : stalePartials(target.parent_path().empty() ? "." : target.parent_path().string())) {
+  for (const auto &[file, of] :
+       stalePartials(target.parent_path().empty() ? "." : target.parent_path().string())) {
     const fs::file_time_type t = fs::last_write_time(file, ec);
     if (of == target.filename().string() && !ec && (newest.empty() || t > newestTime)) {
       newest = file;

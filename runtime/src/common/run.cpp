@@ -131,14 +131,14 @@ bool Run::advanceTime(std::uint64_t step) {
   if (stuckSteps_ && (!t.stepSet || stuckSteps_ >= stuckLimit) && endTime_ &&
       steps_ == std::numeric_limits<std::uint64_t>::max() && !runSettings().stopRequested &&
       !endTimeReached())
-    throw RunError("at the end of step " + std::to_string(step) + ": the simulated time did " +
-                   "not advance" +
-                   (t.stepSet ? " in " + std::to_string(stuckSteps_) + " steps" : std::string()) +
-                   " (t = " + decimal(t.time) + ", time step " + decimal(t.step) +
-                   (t.stepSet ? "" : ", never set") + ") and the run ends only at t = " +
-                   decimal(*endTime_) + ": it would never end; set a time step that advances " +
-                   "the time (wash::set_time_step, or a reduction into \"time_step\") or " +
-                   "give an iteration count (--steps N or wash::set_max_iterations)");
+    throw RunError(
+        "at the end of step " + std::to_string(step) + ": the simulated time did " + "not advance" +
+        (t.stepSet ? " in " + std::to_string(stuckSteps_) + " steps" : std::string()) +
+        " (t = " + decimal(t.time) + ", time step " + decimal(t.step) +
+        (t.stepSet ? "" : ", never set") + ") and the run ends only at t = " + decimal(*endTime_) +
+        ": it would never end; set a time step that advances " +
+        "the time (wash::set_time_step, or a reduction into \"time_step\") or " +
+        "give an iteration count (--steps N or wash::set_max_iterations)");
   return outputTimeCrossed();
 }
 

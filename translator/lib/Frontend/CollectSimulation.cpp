@@ -138,9 +138,9 @@ private:
   /// setjmp and longjmp: a jump back re-runs registrations the walk reads
   /// once, or a jump out skips them.
   static bool isNonLocalJump(const FunctionDecl *FD) {
-    static const std::set<std::string> Names = {"setjmp",  "_setjmp",    "__sigsetjmp", "sigsetjmp",
-                                                "longjmp", "_longjmp",   "siglongjmp",
-                                                "__longjmp_chk"};
+    static const std::set<std::string> Names = {"setjmp",     "_setjmp",      "__sigsetjmp",
+                                                "sigsetjmp",  "longjmp",      "_longjmp",
+                                                "siglongjmp", "__longjmp_chk"};
     return FD->getIdentifier() && FD->getDeclContext()->getRedeclContext()->isTranslationUnit() &&
            Names.count(FD->getName().str());
   }
@@ -398,7 +398,7 @@ static const FunctionDecl *findMain(ASTContext &Ctx) {
 }
 
 std::optional<Registrations> collectSimulation(ASTContext &Ctx, Diagnoser &D, unsigned Dimension,
-                                              AstRefs &Refs) {
+                                               AstRefs &Refs) {
   Refs.Main = findMain(Ctx);
   if (!Refs.Main) {
     SourceManager &SM = Ctx.getSourceManager();

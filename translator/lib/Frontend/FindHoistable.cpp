@@ -30,8 +30,8 @@ std::string globalName(const NamedDecl *ND) {
 }
 
 bool isDouble(QualType T) {
-  return !T.isNull() && T.getCanonicalType().getUnqualifiedType()->isSpecificBuiltinType(
-                            BuiltinType::Double);
+  return !T.isNull() &&
+         T.getCanonicalType().getUnqualifiedType()->isSpecificBuiltinType(BuiltinType::Double);
 }
 
 /// Who calls whom among the user's functions, and which functions some code
@@ -39,8 +39,7 @@ bool isDouble(QualType T) {
 /// lambda, an initialiser, a function whose address is taken).
 class CallGraph : public RecursiveASTVisitor<CallGraph> {
 public:
-  CallGraph(ASTContext &Ctx, const AstRefs &Refs, const std::vector<Kernel> &Kernels)
-      : Ctx(Ctx) {
+  CallGraph(ASTContext &Ctx, const AstRefs &Refs, const std::vector<Kernel> &Kernels) : Ctx(Ctx) {
     for (unsigned K = 0; K < Kernels.size(); ++K)
       if (K < Refs.Kernels.size() && Refs.Kernels[K])
         (Kernels[K].Kind == KernelKind::Force ? ForceKernels : OtherRoots)
@@ -54,7 +53,8 @@ public:
 
   bool TraverseFunctionDecl(FunctionDecl *FD) { return traverseFunction(FD); }
   bool TraverseCXXMethodDecl(CXXMethodDecl *FD) {
-    Stack.push_back(nullptr); // members (a lambda's too) are not followed: their calls may run anywhere
+    Stack.push_back(
+        nullptr); // members (a lambda's too) are not followed: their calls may run anywhere
     bool Result = RecursiveASTVisitor::TraverseCXXMethodDecl(FD);
     Stack.pop_back();
     return Result;
@@ -266,7 +266,8 @@ private:
     if (!Accessor || Accessor->How != Mode::Read || Accessor->IsType ||
         Accessor->Kind != ForceKind::Scalar || (Accessor->Field && Accessor->Field->Name == "id"))
       return false;
-    const auto *Object = dyn_cast<DeclRefExpr>(MC->getImplicitObjectArgument()->IgnoreParenImpCasts());
+    const auto *Object =
+        dyn_cast<DeclRefExpr>(MC->getImplicitObjectArgument()->IgnoreParenImpCasts());
     const auto *V = Object ? dyn_cast<VarDecl>(Object->getDecl()) : nullptr;
     if (!V || !LoopVars.count(V) || (Neighbour && Neighbour != V))
       return false;
@@ -328,9 +329,9 @@ private:
     if (std::optional<std::string> Constant = constant(V))
       return text(*Constant);
     // A local never modified: its initialiser, converted to its type.
-    if (isa<ParmVarDecl>(V) || !V->hasLocalStorage() || V->getDeclContext() != F ||
-        !V->getInit() || V->getType()->isReferenceType() || V->isCXXForRangeDecl() ||
-        LoopVars.count(V) || !onlyRead(V))
+    if (isa<ParmVarDecl>(V) || !V->hasLocalStorage() || V->getDeclContext() != F || !V->getInit() ||
+        V->getType()->isReferenceType() || V->isCXXForRangeDecl() || LoopVars.count(V) ||
+        !onlyRead(V))
       return false;
     const Expr *Init = V->getInit();
     bool Same = typeName(Init->IgnoreImpCasts()->getType()) == typeName(V->getType()) &&
@@ -416,8 +417,7 @@ public:
   FunctionScan(ASTContext &Ctx, const Diagnoser &D, const FunctionDecl *F,
                std::vector<unsigned> Kernels, CallGraph &Graph, Purity &Pure,
                std::vector<HoistedExpr> &Found)
-      : Ctx(Ctx), D(D), F(F), Kernels(std::move(Kernels)), Graph(Graph), Pure(Pure),
-        Found(Found) {}
+      : Ctx(Ctx), D(D), F(F), Kernels(std::move(Kernels)), Graph(Graph), Pure(Pure), Found(Found) {}
 
   void run() {
     struct Loops : RecursiveASTVisitor<Loops> {

@@ -81,7 +81,8 @@ public:
   Action(const Callback &OnAST, unsigned Dim) : OnAST(OnAST), Dim(Dim) {}
   std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance &CI, StringRef) override {
     auto C = std::make_unique<Consumer>(OnAST, Dim);
-    CI.getPreprocessor().addPPCallbacks(std::make_unique<IncludeRecorder>(C->Includes, CI.getSourceManager()));
+    CI.getPreprocessor().addPPCallbacks(
+        std::make_unique<IncludeRecorder>(C->Includes, CI.getSourceManager()));
     return C;
   }
 

@@ -21,10 +21,10 @@ bool isArithmetic(QualType T) {
 /// <cmath> functions without side effects that matter to a value.
 bool isMathFunction(const FunctionDecl *FD, const SourceManager &SM) {
   static const std::set<std::string> Names = {
-      "sqrt",  "cbrt",  "pow",  "exp",  "exp2", "expm1", "log",      "log2",  "log10",
-      "log1p", "fabs",  "abs",  "sin",  "cos",  "tan",   "asin",     "acos",  "atan",
-      "atan2", "sinh",  "cosh", "tanh", "hypot", "floor", "ceil",    "trunc", "round",
-      "fmin",  "fmax",  "fma",  "copysign", "min", "max"};
+      "sqrt",  "cbrt", "pow",  "exp",      "exp2",  "expm1", "log",  "log2",  "log10",
+      "log1p", "fabs", "abs",  "sin",      "cos",   "tan",   "asin", "acos",  "atan",
+      "atan2", "sinh", "cosh", "tanh",     "hypot", "floor", "ceil", "trunc", "round",
+      "fmin",  "fmax", "fma",  "copysign", "min",   "max"};
   if (!FD->getIdentifier() || !Names.count(FD->getName().str()) ||
       !SM.isInSystemHeader(SM.getExpansionLoc(FD->getLocation())))
     return false;
@@ -138,8 +138,7 @@ bool Purity::readable(const ValueDecl *D, const FunctionDecl *F) const {
 bool Purity::writesLocal(const Expr *E, const FunctionDecl *F) {
   const auto *Ref = dyn_cast<DeclRefExpr>(E->IgnoreParens());
   const auto *V = Ref ? dyn_cast<VarDecl>(Ref->getDecl()) : nullptr;
-  return V && V->hasLocalStorage() && V->getDeclContext() == F &&
-         !V->getType()->isReferenceType();
+  return V && V->hasLocalStorage() && V->getDeclContext() == F && !V->getType()->isReferenceType();
 }
 
 bool Purity::binaryAllowed(const BinaryOperator *Bin) {

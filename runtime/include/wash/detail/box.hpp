@@ -50,8 +50,8 @@ struct Box {
 };
 
 /// Fills box from the API's lists; false if they do not fit `dims`.
-inline bool setBox(Box &box, int dims, const std::vector<double> &lo,
-                   const std::vector<double> &hi, const std::vector<bool> &periodic) {
+inline bool setBox(Box &box, int dims, const std::vector<double> &lo, const std::vector<double> &hi,
+                   const std::vector<bool> &periodic) {
   if (int(lo.size()) != dims || int(hi.size()) != dims || int(periodic.size()) != dims)
     return false;
   for (int a = 0; a < dims; ++a) {

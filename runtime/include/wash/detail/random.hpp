@@ -17,8 +17,7 @@ constexpr std::uint64_t mix64(std::uint64_t x) {
 /// 64 random bits of (key, step, stream): three mixing rounds, each taking one
 /// input scaled by its own odd constant. Each round is a bijection, so for one
 /// step and stream distinct keys never give the same bits.
-constexpr std::uint64_t randomBits(std::uint64_t key, std::uint64_t step,
-                                   std::uint64_t stream) {
+constexpr std::uint64_t randomBits(std::uint64_t key, std::uint64_t step, std::uint64_t stream) {
   std::uint64_t x = mix64(key * 0x9e3779b97f4a7c15ULL + 0x6a09e667f3bcc909ULL);
   x = mix64(x ^ (step * 0xd1b54a32d192ed03ULL + 0xbb67ae8584caa73bULL));
   return mix64(x ^ (stream * 0xaef17502108ef2d9ULL + 0x3c6ef372fe94f82bULL));

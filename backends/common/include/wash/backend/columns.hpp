@@ -90,8 +90,7 @@ template <typename T> void permute(Column<T> &column, const std::vector<Index> &
 /// Removes the rows marked in `gone` by moving rows from the end into the
 /// holes: work in proportion to the rows removed, not to all rows (order is
 /// not kept; the next cell sort restores it).
-template <typename Particles>
-void removeRows(Particles &P, const std::vector<char> &gone) {
+template <typename Particles> void removeRows(Particles &P, const std::vector<char> &gone) {
   std::size_t size = P.size();
   for (std::size_t hole = 0; hole < size; ++hole) {
     if (!gone[hole])

@@ -28,6 +28,6 @@ struct Registrations {
 /// a loop, and every use of a registration function other than a call.
 /// nullopt on error.
 std::optional<Registrations> collectSimulation(clang::ASTContext &Ctx, Diagnoser &D,
-                                              unsigned Dimension, AstRefs &Refs);
+                                               unsigned Dimension, AstRefs &Refs);
 
 } // namespace wash::tr
