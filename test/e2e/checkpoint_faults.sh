@@ -1,6 +1,6 @@
 # Checkpoints refused with the reason, nothing written: a truncated shard, a
 # flipped byte, another simulation's checkpoint, a float build reading a
-# double checkpoint, a restart past --steps. wash::stop(), --checkpoint-dt and
+# double checkpoint, the reference's and a translated program's each other's, a restart past --steps. wash::stop(), --checkpoint-dt and
 # --output-dt across a restart. And SIGTERM: the run finishes its
 # iteration, leaves a complete checkpoint, exits 75, and the restart
 # reproduces the uninterrupted run; a second signal ends it at once.
@@ -33,7 +33,10 @@ refused "index.wck' is corrupted" flipped-index
 refused "it is of simulation 'wash'; this program runs 'serial_test'" "$good" "$bin/ca_fluid_sim-serial"
 refused "it holds double-precision state; this program stores float" "$good" \
   "$bin/variables_scene_float-serial"
-refused "it was written by another program" "$good" "$bin/variables_scene-reference"
+refused "it was written by a translated program; a reference build restarts only from its own checkpoints" \
+  "$good" "$bin/variables_scene-reference"
+expect_exit 0 "$bin/variables_scene-reference" --steps 10 --checkpoint-every 10 --quiet --out ref
+refused "it was written by the reference build" ref/checkpoints/checkpoint_000010
 refused "no complete checkpoint" good # the output folder, not a checkpoint folder
 rm -rf refused && expect_exit 1 "$p" --steps 5 --quiet --out refused --restart "$good"
 expect_in out.txt "the run ends after iteration 5"

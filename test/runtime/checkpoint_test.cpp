@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,7 +16,33 @@ namespace fs = std::filesystem;
 namespace {
 
 CheckpointIdentity identity() {
-  return {"sim", identityHash("kernels: a"), 2, false, {{"id", 8}, {"density", 8}}};
+  return {"sim", identityHash("kernels: a"), 2, false, {{"id", 8}, {"density", 8}},
+          CheckpointWriter::Translated};
+}
+
+/// Rewrites a version 3 file as version 2 wrote it: no writer byte after the
+/// program hash (the identity's second string), its checksum recomputed; an
+/// index's last word, its one shard's checksum, replaced by `shardSum`.
+/// Returns the new checksum.
+std::uint64_t downgradeToVersion2(const std::string &path, const std::uint64_t *shardSum = nullptr) {
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  std::size_t at = 12; // magic, version
+  for (int text = 0; text < 2; ++text) {
+    std::uint32_t n;
+    std::memcpy(&n, bytes.data() + at, 4);
+    at += 4 + n;
+  }
+  bytes.erase(at, 1);
+  bytes[8] = 2;
+  bytes.resize(bytes.size() - 8);
+  if (shardSum)
+    std::memcpy(bytes.data() + bytes.size() - 8, shardSum, 8);
+  const std::uint64_t sum = checkpointChecksum(bytes.data(), bytes.size());
+  bytes.append(reinterpret_cast<const char *>(&sum), 8);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+  return sum;
 }
 
 Shard shardOf(std::uint64_t n) {
@@ -146,4 +173,56 @@ TEST_F(Checkpoint, AnIndexWithoutItsShardsChecksumsIsNotWritten) {
   s.shards = 2;
   s.shardChecksums = {1};
   EXPECT_THROW(writeIndex((dir / "index.wck").string(), identity(), s), RunError);
+}
+
+std::string indexRefusal(const std::string &folder, const CheckpointIdentity &want) {
+  try {
+    readIndex(folder, want);
+  } catch (const RunError &e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST_F(Checkpoint, TheWriterIsNamedWhenAReferenceAndATranslatedProgramMeet) {
+  CheckpointIdentity reference = identity();
+  reference.program = identityHash("reference kernels: a");
+  reference.writer = CheckpointWriter::Reference;
+  EXPECT_NE(indexRefusal(folder, reference)
+                .find("it was written by a translated program; a reference build restarts only "
+                      "from its own checkpoints"),
+            std::string::npos)
+      << indexRefusal(folder, reference);
+  EXPECT_NE(refusal(0, reference).find("written by a translated program"), std::string::npos);
+  CheckpointIdentity translated = identity();
+  translated.program = identityHash("kernels: b");
+  EXPECT_NE(indexRefusal(folder, translated).find("it was written by another program (kernels or "
+                                                  "columns differ"),
+            std::string::npos)
+      << indexRefusal(folder, translated);
+
+  // And the reverse: a reference checkpoint read by a translated program.
+  const std::string other = checkpointFolder(dir.string(), 9), partial = partialFolder(other);
+  beginCheckpoint(partial);
+  CheckpointState s;
+  s.shardChecksums = {writeShard(shardPath(partial, 0), reference, shardOf(1))};
+  writeIndex(indexPath(partial), reference, s);
+  completeCheckpoint(partial, other, 2);
+  EXPECT_NE(indexRefusal(other, identity()).find("it was written by the reference build"),
+            std::string::npos)
+      << indexRefusal(other, identity());
+}
+
+TEST_F(Checkpoint, Version2FilesAreStillRead) {
+  const std::uint64_t shardSum = downgradeToVersion2(shardPath(folder, 0));
+  downgradeToVersion2(indexPath(folder), &shardSum);
+  const CheckpointState s = readIndex(folder, identity()); // the writer is not compared
+  EXPECT_EQ(s.iteration, 7u);
+  EXPECT_EQ(readShard(folder, 0, identity(), s).columns.at(1).bytes, shardOf(5).columns[1].bytes);
+  // A version 2 file does not say who wrote it: the general reason.
+  CheckpointIdentity reference = identity();
+  reference.program = identityHash("reference kernels: a");
+  reference.writer = CheckpointWriter::Reference;
+  EXPECT_NE(indexRefusal(folder, reference).find("written by another program"), std::string::npos)
+      << indexRefusal(folder, reference);
 }

@@ -18,7 +18,10 @@ namespace {
 
 constexpr char indexMagic[8] = {'W', 'A', 'S', 'H', 'C', 'K', 'P', 'T'};
 constexpr char shardMagic[8] = {'W', 'A', 'S', 'H', 'S', 'H', 'R', 'D'};
-constexpr std::uint32_t formatVersion = 2; // 2: the index holds its shards' checksums
+// 2: the index holds its shards' checksums; 3: the identity says which kind of
+// program wrote it (version 2 files are still read, their writer Unknown).
+constexpr std::uint32_t formatVersion = 3;
+constexpr std::uint32_t oldestReadVersion = 2;
 
 /// A 64-bit checksum over a byte stream, eight bytes at a time: each step is
 /// a bijection of the state, so any one changed word changes the result.
@@ -83,6 +86,7 @@ struct Encoder {
   void identity(const CheckpointIdentity &id) {
     text(id.simulation);
     text(id.program);
+    put(std::uint8_t(id.writer));
     put(id.dimensions);
     put(std::uint8_t(id.useFloat));
     put(std::uint32_t(id.fields.size()));
@@ -98,6 +102,7 @@ struct Decoder {
   const std::vector<char> &file;
   std::size_t at = 0;
   const std::string &path;
+  std::uint32_t version = formatVersion;
   template <typename T> T get() {
     need(sizeof(T));
     T v;
@@ -121,6 +126,11 @@ struct Decoder {
     CheckpointIdentity id;
     id.simulation = text();
     id.program = text();
+    if (version >= 3) {
+      const std::uint8_t writer = get<std::uint8_t>();
+      id.writer = writer <= std::uint8_t(CheckpointWriter::Translated) ? CheckpointWriter(writer)
+                                                                       : CheckpointWriter::Unknown;
+    }
     id.dimensions = get<std::uint32_t>();
     id.useFloat = get<std::uint8_t>() != 0;
     const std::uint32_t n = get<std::uint32_t>();
@@ -156,6 +166,13 @@ std::string mismatch(const CheckpointIdentity &got, const CheckpointIdentity &wa
   if (got.simulation != want.simulation)
     return "it is of simulation '" + got.simulation + "'; this program runs '" + want.simulation +
            "'";
+  using enum CheckpointWriter;
+  if (got.program != want.program && got.writer != Unknown && got.writer != want.writer)
+    return got.writer == Translated
+               ? "it was written by a translated program; a reference build restarts only from "
+                 "its own checkpoints"
+               : "it was written by the reference build (the untranslated program); a "
+                 "translated program restarts only from checkpoints of a translated build";
   if (got.program != want.program)
     return "it was written by another program (kernels or columns differ: program " + got.program +
            ", this one " + want.program + ")";
@@ -165,8 +182,10 @@ std::string mismatch(const CheckpointIdentity &got, const CheckpointIdentity &wa
   return "";
 }
 
-/// The whole file, its checksum checked (throws RunError, saying why).
-std::vector<char> readChecked(const std::string &path, const char (&magic)[8]) {
+/// The whole file, its magic and version checked (throws RunError, saying
+/// why); `version` is set to the file's.
+std::vector<char> readChecked(const std::string &path, const char (&magic)[8],
+                              std::uint32_t &version) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw RunError("cannot read checkpoint file '" + path + "': " + std::strerror(errno));
@@ -178,11 +197,11 @@ std::vector<char> readChecked(const std::string &path, const char (&magic)[8]) {
   if (file.size() < 8 + 4 + 8 || std::memcmp(file.data(), magic, 8) != 0)
     throw RunError("'" + path + "' is not a wash checkpoint file" +
                    (file.size() < 20 ? " (it is truncated or empty)" : ""));
-  std::uint32_t version;
   std::memcpy(&version, file.data() + 8, 4);
-  if (version != formatVersion)
+  if (version < oldestReadVersion || version > formatVersion)
     throw RunError("checkpoint file '" + path + "' has format version " + std::to_string(version) +
-                   "; this program reads version " + std::to_string(formatVersion));
+                   "; this program reads versions " + std::to_string(oldestReadVersion) + " to " +
+                   std::to_string(formatVersion));
   return file;
 }
 
@@ -380,8 +399,9 @@ std::string resolveRestart(const std::string &path) {
 
 CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &expected) {
   const std::string path = indexPath(folder);
-  const std::vector<char> file = readChecked(path, indexMagic);
-  Decoder d{file, 12, path};
+  std::uint32_t version = 0;
+  const std::vector<char> file = readChecked(path, indexMagic, version);
+  Decoder d{file, 12, path, version};
   CheckpointIdentity got;
   CheckpointState s;
   try {
@@ -424,8 +444,9 @@ CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &e
 Shard readShard(const std::string &folder, std::uint32_t shard, const CheckpointIdentity &expected,
                 const CheckpointState &index) {
   const std::string path = shardPath(folder, shard);
-  const std::vector<char> file = readChecked(path, shardMagic);
-  Decoder d{file, 12, path};
+  std::uint32_t version = 0;
+  const std::vector<char> file = readChecked(path, shardMagic, version);
+  Decoder d{file, 12, path, version};
   CheckpointIdentity got = d.identity();
   Shard s;
   s.particles = d.get<std::uint64_t>();
@@ -450,6 +471,12 @@ Shard readShard(const std::string &folder, std::uint32_t shard, const Checkpoint
     at += n;
   }
   return s;
+}
+
+std::uint64_t checkpointChecksum(const void *data, std::size_t bytes) {
+  Checksum sum;
+  sum.add(data, bytes);
+  return sum.value();
 }
 
 std::string identityHash(const std::string &text) {

@@ -155,7 +155,8 @@ void Run::noteCheckpoint(std::uint64_t step) {
 
 CheckpointIdentity Run::identity(std::vector<CheckpointField> fields) const {
   return {runSettings().simulationName, program_, std::uint32_t(dimensions_), useFloat_,
-          std::move(fields)};
+          std::move(fields),
+          backend_ == "reference" ? CheckpointWriter::Reference : CheckpointWriter::Translated};
 }
 
 std::string Run::checkpointDir() const { return checkpointDirectory(programOptions()); }

@@ -40,6 +40,11 @@ struct CheckpointField {
   bool operator==(const CheckpointField &) const = default;
 };
 
+/// Which kind of program wrote a checkpoint: the reference runtime's
+/// checkpoints hold its own store, a translated program's its columns, so
+/// neither restarts from the other's. Version 2 files do not say (Unknown).
+enum class CheckpointWriter : std::uint8_t { Unknown = 0, Reference = 1, Translated = 2 };
+
 /// What a checkpoint must match to be restarted by this program.
 struct CheckpointIdentity {
   std::string simulation; ///< set_simulation_name
@@ -47,6 +52,8 @@ struct CheckpointIdentity {
   std::uint32_t dimensions = 0;
   bool useFloat = false;
   std::vector<CheckpointField> fields; ///< every stored column, in storage order
+  /// Consulted only to say why two programs differ.
+  CheckpointWriter writer = CheckpointWriter::Unknown;
 };
 
 /// One process's particles: `particles` rows of each column.
@@ -103,6 +110,9 @@ std::string resolveRestart(const std::string &path);
 CheckpointState readIndex(const std::string &folder, const CheckpointIdentity &expected);
 Shard readShard(const std::string &folder, std::uint32_t shard, const CheckpointIdentity &expected,
                 const CheckpointState &index);
+
+/// The checksum a checkpoint file ends with, of all its bytes before it.
+std::uint64_t checkpointChecksum(const void *data, std::size_t bytes);
 
 /// A short hash of `text`, for CheckpointIdentity::program.
 std::string identityHash(const std::string &text);
