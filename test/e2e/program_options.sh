@@ -17,8 +17,26 @@ done
 expect_in out.txt "'myrun', 4032 particles, 2D, double"
 expect_in out.txt "10 steps"
 expect_in out.txt "wash: 10 steps of 4032 particles in "
-grep -qE "; steps alone [0-9]+\.[0-9]{3} s, [0-9]+\.[0-9] ns per particle-step; output in o1$" out.txt \
-  || { cat out.txt >&2; fail "no time of the steps alone in the summary"; }
+# The steps' wall and CPU time, each per particle-step, and whose CPU time.
+grep -qE "; steps alone [0-9]+\.[0-9]{3} s, [0-9]+\.[0-9] ns per particle-step wall, CPU [0-9]+\.[0-9]{3} s, [0-9]+\.[0-9] ns per particle-step \(this process, [0-9]+ threads?\); output in o1$" out.txt \
+  || { cat out.txt >&2; fail "no wall and CPU time of the steps alone in the summary"; }
+grep -q "profile" out.txt && fail "a profile without --profile"
+
+# --profile: a table of where the steps went, one row per kernel, the search
+# and output, even with --quiet; the results are the same.
+expect_exit 0 "$sim" --steps 3 --out o4 --dump profiled.csv --quiet --profile
+expect_in out.txt "wash: profile of 3 steps (this process)"
+grep -qE "^  phase +calls +wall s +ms/step +% wall +ns/particle +CPU s$" out.txt ||
+  { cat out.txt >&2; fail "no profile table header"; }
+for phase in VelocityUpdate CalculateDensity force_kernel UpdatePositions HandleCollisions; do
+  grep -qE "^  $phase +3 " out.txt || { cat out.txt >&2; fail "no profile row of $phase, 3 calls"; }
+done
+grep -qE "^  neighbour search.* +3 " out.txt || { cat out.txt >&2; fail "no neighbour search row"; }
+grep -qE "^  output \(frames\) +1 " out.txt || { cat out.txt >&2; fail "no output row"; }
+grep -qE "^  total +[0-9]+ " out.txt || { cat out.txt >&2; fail "no total row"; }
+grep -q "steps alone" out.txt && fail "--quiet --profile printed the summary"
+expect_exit 0 "$sim" --steps 3 --out o5 --dump unprofiled.csv --quiet
+cmp -s profiled.csv unprofiled.csv || fail "--profile changed the results"
 
 # VTK: .vtp frames plus a .pvd series; final state only by default.
 expect_exit 0 "$sim" --steps=3 --out o2

@@ -177,7 +177,9 @@ TEST_F(ReferenceTest, HeaderAndSummaryLinesAreTheSharedRunsWithItsName) {
                                "D, double, influence radius 0.6, 1 steps\n"
                                "wash: 1 steps of 3 particles in "))
       << text;
-  EXPECT_NE(text.find(" ns per particle-step; output in " + out.string() + "\n"), std::string::npos)
+  EXPECT_NE(text.find(" ns per particle-step (this process, 1 thread); output in " + out.string() +
+                      "\n"),
+            std::string::npos)
       << text;
 }
 

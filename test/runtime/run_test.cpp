@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <regex>
 
 #include <unistd.h>
 
@@ -195,8 +196,60 @@ TEST_F(RunTest, HeaderAndSummaryLines) {
   EXPECT_TRUE(text.starts_with("wash reference: 'lines', 3 particles, 2D, float, influence "
                                "radius 0.5, 4 steps\nwash: 4 steps of 3 particles in "))
       << text;
-  EXPECT_NE(text.find(" ns per particle-step; output in " + out.string() + "\n"), std::string::npos)
+  // Wall and CPU time of the steps, each per particle-step, and whose CPU.
+  EXPECT_TRUE(std::regex_search(text, std::regex("; steps alone [0-9]+\\.[0-9]{3} s, [0-9]+\\.[0-9] ns "
+                                                 "per particle-step wall, CPU [0-9]+\\.[0-9]{3} s, "
+                                                 "[0-9]+\\.[0-9] ns per particle-step \\(this "
+                                                 "process, 1 thread\\); output in ")))
       << text;
+  EXPECT_NE(text.find(" ns per particle-step (this process, 1 thread); output in " + out.string() +
+                      "\n"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("profile"), std::string::npos) << text; // only with --profile
+}
+
+TEST_F(RunTest, TheProfileTablesEveryPhase) {
+  detail::profiling = true;
+  set_simulation_name("lines");
+  detail::Frame frame;
+  frame.ids = {0, 1, 2};
+  frame.columns.push_back({"pos", 2, {0.0, 0.0, 1.0, 0.0, 2.0, 0.0}});
+  testing::internal::CaptureStdout();
+  {
+    detail::Run run(untranslated, true);
+    run.begin(3, [&] { return frame; });
+    for (std::uint64_t step = 1; step <= run.steps(); ++step) {
+      run.kernel("Density");
+      {
+        const detail::ProfileScope search("neighbour search");
+      }
+      run.kernel("Move");
+      run.endStep(step, [&] { return frame; });
+    }
+    run.finish(frame);
+  }
+  detail::profiling = false;
+  const std::string text = testing::internal::GetCapturedStdout(); // quiet: the table alone
+  EXPECT_TRUE(text.starts_with("wash: profile of 4 steps (this process)\n")) << text;
+  EXPECT_TRUE(std::regex_search(text, std::regex("\n  phase +calls +wall s +ms/step +% wall +"
+                                                 "ns/particle +CPU s\n")))
+      << text;
+  // One row per phase, in the order they first ran, with its calls.
+  EXPECT_TRUE(std::regex_search(
+      text, std::regex("\n  \\(before the first kernel\\) +1 .*\n  Density +4 .*\n  neighbour "
+                       "search +4 .*\n  Move +4 .*\n  \\(end of step: time, progress\\) +4 .*\n  "
+                       "output \\(frames\\) +1 .*\n  total +18 ")))
+      << text;
+  EXPECT_EQ(text.find("ns per particle-step"), std::string::npos) << text;
+}
+
+TEST_F(RunTest, BusyCoresAreToldFromIdleThreads) {
+  EXPECT_FALSE(detail::coresWereBusy(1.9, 1.0, 2, 5)); // every thread ran
+  EXPECT_FALSE(detail::coresWereBusy(1.0, 1.0, 2, 5)); // one slept: serial work
+  EXPECT_TRUE(detail::coresWereBusy(1.0, 1.0, 2, 400)); // preempted again and again
+  EXPECT_TRUE(detail::coresWereBusy(13.0, 56.0, 2, 20000)); // the issue's run
+  EXPECT_FALSE(detail::coresWereBusy(0.0, 0.0, 1, 0));
 }
 
 TEST_F(RunTest, AStopEndsTheRunAtThatStep) {

@@ -6,6 +6,7 @@
 // output: the simulation's own prints and the run summary appear once.
 //
 //===----------------------------------------------------------------------===//
+#include <wash/backend/thread_waiting.hpp>
 #include <wash/detail/checkpoint.hpp>
 #include <wash/detail/entry.hpp>
 #include <wash/detail/hdf5_series.hpp>
@@ -15,9 +16,11 @@
 #include <mpi.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 extern "C" int __real_main(int argc, char **argv);
 extern "C" int __wrap_main(int argc, char **argv) {
+  wash::backend::boundThreadWaiting(argv); // before MPI starts
   // --watchdog decides the thread level, before runProgram reads (and checks)
   // every option.
   std::optional<double> watchdog;
@@ -25,6 +28,10 @@ extern "C" int __wrap_main(int argc, char **argv) {
     watchdog = wash::detail::parseProgramOptions(argc, argv).options.watchdog;
   } catch (const wash::detail::OptionError &) {
   }
+  // A rank waiting for a message polls; beside other processes on its core
+  // (more ranks than cores, or a busy machine) it then yields the core
+  // (Open MPI reads this in MPI_Init; the user's setting is kept).
+  setenv("OMPI_MCA_mpi_yield_when_idle", "1", /*overwrite=*/0);
   int provided = 0;
   MPI_Init_thread(&argc, &argv, wash::mpi::watchdogThreadLevel(watchdog), &provided);
   wash::mpi::startWatchdog(watchdog, provided, argc > 0 ? argv[0] : "wash");

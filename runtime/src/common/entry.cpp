@@ -1,5 +1,6 @@
 #include <wash/detail/checkpoint.hpp>
 #include <wash/detail/entry.hpp>
+#include <wash/detail/profile.hpp>
 #include <wash/detail/run_output.hpp>
 #include <wash/detail/run_settings.hpp>
 
@@ -36,6 +37,7 @@ int runProgram(int argc, char **argv, int (*simulationMain)(int, char **)) {
       return 0;
     }
     programOptions() = parsed.options;
+    profiling = parsed.options.profile;
     return simulationMain(int(parsed.userArgv.size()) - 1, parsed.userArgv.data());
   } catch (const Interrupted &e) {
     std::fflush(stdout);

@@ -136,10 +136,12 @@ ParsedArgs parseProgramOptions(int argc, char **argv) {
       value = arg.substr(eq + 1);
       inlineValue = true;
     }
-    if (name == "--quiet" || name == "--help") {
+    if (name == "--quiet" || name == "--help" || name == "--profile") {
       if (inlineValue)
         throw OptionError("option '" + name + "' takes no value");
-      (name == "--quiet" ? parsed.options.quiet : parsed.options.help) = true;
+      (name == "--quiet"   ? parsed.options.quiet
+       : name == "--help" ? parsed.options.help
+                          : parsed.options.profile) = true;
     } else if (takesValue(name)) {
       if (!inlineValue) {
         if (i + 1 >= argc)
@@ -186,6 +188,8 @@ std::string usageText(const std::string &program) {
          "  --watchdog S       MPI: end the job when a rank stops answering for S\n"
          "                     seconds (default: 10 times the longest wait between two\n"
          "                     collective calls, at least 60); 0 = off\n"
+         "  --profile          at the end, a table of where the steps' time went: each\n"
+         "                     kernel, the neighbour search, MPI halo exchanges, output\n"
          "  --quiet            no run header, progress line or summary\n"
          "  --help             print this text and exit\n"
          "  --                 pass everything after it to the simulation\n";

@@ -9,6 +9,8 @@
 #include <limits>
 #include <map>
 
+#include <sys/resource.h>
+
 namespace wash::detail {
 namespace {
 
@@ -190,6 +192,7 @@ void Run::checkpointWritten(const std::string &folder, std::uint64_t step, doubl
                 (unsigned long long)step, folder.c_str(), seconds);
   std::fflush(stdout);
   stepStart_ = Clock::now();
+  stepCpuStart_ = processCpuSeconds();
 }
 
 std::uint64_t Run::resume(const CheckpointState &saved, std::size_t particles,
@@ -226,7 +229,7 @@ std::uint64_t Run::resume(const CheckpointState &saved, std::size_t particles,
   std::fflush(stdout);
   runStage() = {particles, saved.iteration + 1, true, steps_};
   watchStopSignals();
-  stepStart_ = Clock::now();
+  startStepClocks();
   return firstStep_ = saved.iteration + 1;
 }
 
@@ -242,6 +245,7 @@ void Run::reserve(const Frame &frame) {
 }
 
 void Run::write(std::uint64_t step, const Frame &frame) {
+  const ProfileScope profiled("output (frames)");
   if (output_)
     output_->writeFrame(step, frame, simTime().time, /*seriesByTime=*/simTime().stepSet);
 }
@@ -270,23 +274,69 @@ void Run::started(std::size_t particles) {
   progress_ = std::make_unique<Progress>(steps_, particles, talk, endTime_);
 }
 
+void Run::startStepClocks() {
+  if (profiling)
+    profileReset("(before the first kernel)");
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  involuntarySwitchesAtStart_ = usage.ru_nivcsw;
+  stepStart_ = Clock::now();
+  stepCpuStart_ = processCpuSeconds();
+}
+
 void Run::finish(const Frame &finalFrame) {
+  const std::vector<ProfiledPhase> phases = profiling ? profiledPhases() : std::vector<ProfiledPhase>{};
   double seconds = progress_->finish();
   if (!output_)
     return;
   output_->finish(finalFrame);
-  if (!writes_ || programOptions().quiet)
-    return;
   const std::uint64_t particles = runStage().particles; // finalFrame: this process's rows
   const std::uint64_t ran = steps_ >= firstStep_ ? steps_ - firstStep_ + 1 : 0; // after a restart
   const double particleSteps = double(ran) * double(particles);
+  const std::string whose =
+      processes() ? "rank 0 of " + std::to_string(processes()->count()) : "this process";
+  if (writes_ && profiling) // asked for: printed even with --quiet
+    std::printf("%s", profileTable(phases, ran, particleSteps, whose).c_str());
+  if (!writes_ || programOptions().quiet) {
+    std::fflush(stdout);
+    return;
+  }
+  auto perParticleStep = [&](double s) { return particleSteps > 0 ? s * 1e9 / particleSteps : 0.0; };
   std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); "
-              "steps alone %.3f s, %.1f ns per particle-step; output in %s\n",
+              "steps alone %.3f s, %.1f ns per particle-step wall, CPU %.3f s, %.1f ns per "
+              "particle-step (%s, %d thread%s); output in %s\n",
               (unsigned long long)ran, std::size_t(particles), seconds,
               seconds > 0 ? particleSteps / seconds : 0.0, stepSeconds_,
-              particleSteps > 0 ? stepSeconds_ * 1e9 / particleSteps : 0.0,
+              perParticleStep(stepSeconds_), stepCpuSeconds_, perParticleStep(stepCpuSeconds_),
+              whose.c_str(), loopThreads, loopThreads == 1 ? "" : "s",
               output_->directory().c_str());
+  reportCpu();
   std::fflush(stdout);
+}
+
+bool coresWereBusy(double cpuSeconds, double wallSeconds, int threads, long preemptions) {
+  // Threads that wait sleep (docs/backends.md), so a share well below 1 with
+  // few preemptions is idle threads (serial parts of a step); with many, the
+  // cores were busy with other processes.
+  constexpr double lowShare = 0.7, preemptionsPerSecond = 50.0;
+  return wallSeconds > 0 && cpuSeconds < lowShare * wallSeconds * threads &&
+         double(preemptions) >= preemptionsPerSecond * wallSeconds;
+}
+
+void Run::reportCpu() const {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const long preempted = usage.ru_nivcsw - involuntarySwitchesAtStart_;
+  if (!coresWereBusy(stepCpuSeconds_, stepSeconds_, loopThreads, preempted))
+    return;
+  const double share = stepCpuSeconds_ / (stepSeconds_ * loopThreads);
+  std::printf("wash: warning: the steps got %.0f%% of the CPU time of %d thread%s (%.2f s of CPU "
+              "in %.2f s) and were preempted %ld times: other processes are running on these "
+              "cores, and the times above are theirs as much as this program's. For a true "
+              "figure run on idle cores or on fewer threads (OMP_NUM_THREADS); see "
+              "docs/backends.md, \"Threads on a shared machine\"\n",
+              100.0 * share, loopThreads, loopThreads == 1 ? "" : "s", stepCpuSeconds_,
+              stepSeconds_, preempted);
 }
 
 void Run::checkFinite(const Frame &frame, std::uint64_t step, const std::string &kernel) const {

@@ -59,6 +59,7 @@ std::vector<CheckpointField> fields(const State &s) {
 }
 
 void write(Run &run, const State &s, std::uint64_t step) {
+  const ProfileScope profiled("checkpoint");
   const auto start = std::chrono::steady_clock::now();
   const ParticleStore &p = s.particles;
   const std::size_t n = p.size();

@@ -71,6 +71,7 @@ void runForceKernel(ForceKernel kernel, const Kernel &k, detail::ParticleStore &
   detail::ParticleStore snapshot;
   detail::CellList<dimensions> cells;
   try {
+    const detail::ProfileScope profiled("neighbour search (snapshot, cell list)");
     snapshot = live;
     cells.build(snapshot.pos, snapshot.id, cellSize(rule, snapshot, box, where));
   } catch (const std::bad_alloc &) {
@@ -211,6 +212,7 @@ void start() {
   for (std::uint64_t step = run.firstStep(); step <= run.steps(); ++step) {
     for (const Kernel &k : s.kernels)
       if (k.kind != Kernel::Init) {
+        run.kernel(k.name.c_str());
         runKernel(k, s, step);
         run.checkFinite(frame(), step, k.name);
       }

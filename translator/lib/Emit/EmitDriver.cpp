@@ -47,7 +47,8 @@ void emitForceSetUp(std::ostream &OS, const Model &M, const CodePlan &Plan, unsi
 void emitKernel(std::ostream &OS, const Model &M, const CodePlan &Plan, unsigned K,
                 const std::string &Callee) {
   const Kernel &Kn = M.Kernels[K];
-  OS << "    " << kernelComment(M, K) << "\n";
+  OS << "    run.kernel(" << stringLiteral(Kn.Function) << "); // its time begins (--profile)\n"
+     << "    " << kernelComment(M, K) << "\n";
   switch (Kn.Kind) {
   case KernelKind::Void: // every process runs it, as every process ran main
     OS << "    " << Callee << "();\n";

@@ -24,6 +24,7 @@ struct RunOptions {
   std::string dumpPath; ///< empty: no dump
   bool quiet = false;
   bool help = false;
+  bool profile = false;            ///< --profile: where the steps' time went
   std::optional<double> endTime;   ///< stop after the iteration that reaches it
   std::optional<double> outputDt;  ///< a frame whenever the time crosses a multiple
   bool vtkAscii = false;           ///< --vtk-encoding ascii (default binary)

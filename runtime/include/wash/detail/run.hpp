@@ -11,6 +11,7 @@
 
 #include <wash/detail/checkpoint.hpp>
 #include <wash/detail/frame.hpp>
+#include <wash/detail/profile.hpp>
 #include <wash/detail/progress.hpp>
 #include <wash/detail/run_output.hpp>
 #include <wash/detail/run_settings.hpp>
@@ -54,6 +55,11 @@ struct Translation {
   std::string program = "";
 };
 
+/// Whether steps that took `cpuSeconds` of CPU on `threads` threads in
+/// `wallSeconds`, preempted `preemptions` times, shared their cores with other
+/// processes: the summary then warns that its times are not the program's.
+bool coresWereBusy(double cpuSeconds, double wallSeconds, int threads, long preemptions);
+
 /// How many multiples of `every` (a positive time option, named `option`)
 /// `time` holds; refused past 2^53, where they are no longer distinct.
 std::uint64_t multiplesIn(double time, double every, const char *option);
@@ -88,13 +94,17 @@ public:
           multiplesIn(simTime().time, *programOptions().checkpointDt, "--checkpoint-dt") + 1;
     runStage().step = 1;
     watchStopSignals();
-    stepStart_ = Clock::now();
+    startStepClocks();
   }
+  /// Where a kernel's time begins (--profile; one branch when off).
+  void kernel(const char *name) const { profileMark(name); }
   /// After every kernel of a step.
   /// Advances the simulated time by the time step; the step is the last when
   /// wash::stop() was called or the time reached the end time.
   template <typename FrameFn> void endStep(std::uint64_t step, FrameFn frame) {
     stepSeconds_ += std::chrono::duration<double>(Clock::now() - stepStart_).count();
+    stepCpuSeconds_ += processCpuSeconds() - stepCpuStart_;
+    profileMark("(end of step: time, progress)");
     const bool timeFrame = advanceTime(step);
     if (runSettings().stopRequested || endTimeReached())
       runStage().steps = steps_ = step; // this step is the last, and written as such
@@ -110,6 +120,7 @@ public:
       progress_->update(step, simTime().time);
     runStage().step = step + 1;
     stepStart_ = Clock::now();
+    stepCpuStart_ = processCpuSeconds();
   }
   void finish(const Frame &finalFrame);
 
@@ -171,6 +182,11 @@ private:
     }
   }
   void started(std::size_t particles);
+  /// The steps' clocks (and --profile's) start now.
+  void startStepClocks();
+  /// The summary's CPU line and, where the steps got much less CPU than they
+  /// waited for, the warning.
+  void reportCpu() const;
   /// Adds the time step to the time (after checking it); whether a frame is
   /// due by --output-dt.
   bool advanceTime(std::uint64_t step);
@@ -215,6 +231,11 @@ private:
   using Clock = std::chrono::steady_clock;
   Clock::time_point stepStart_;
   double stepSeconds_ = 0.0;
+  // The same in CPU time of the whole process (every thread), and the
+  // involuntary context switches of the steps: other processes taking the
+  // cores away.
+  double stepCpuStart_ = 0.0, stepCpuSeconds_ = 0.0;
+  long involuntarySwitchesAtStart_ = 0;
 };
 
 } // namespace wash::detail

@@ -35,6 +35,7 @@ template <typename Columns> std::vector<detail::CheckpointField> checkpointField
 template <typename B, typename Columns>
 void writeCheckpoint(const B &backend, Run &run, std::uint64_t step, std::uint64_t particles,
                      Columns columns) {
+  const detail::ProfileScope profiled("checkpoint");
   const auto start = std::chrono::steady_clock::now();
   const std::string folder = detail::checkpointFolder(run.checkpointDir(), step);
   const std::string partial = detail::partialFolder(folder);

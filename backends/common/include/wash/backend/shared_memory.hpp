@@ -15,6 +15,7 @@
 #include <wash/backend/run.hpp>
 #include <wash/backend/search_geometry.hpp>
 #include <wash/detail/frame.hpp>
+#include <wash/detail/profile.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -53,6 +54,7 @@ public:
   template <typename Particles, typename Fields, typename SmoothingLength = NoSmoothingLength>
   void search(Particles &P, const SearchGeometry &at, const detail::Box &box, Fields,
               SmoothingLength h = {}) {
+    const detail::ProfileScope profiled("neighbour search");
     dropImages(P, images_);
     addImages<D>(P, images_.owned, box, RowReach<SmoothingLength>{at, h}, images_);
     grid_.sort(P.pos, P.id, at.cellSize, order_);
@@ -64,7 +66,10 @@ public:
     images_.permuted(order_);
   }
 
-  template <typename Fields> void refresh(Fields fields) { refreshImages(images_, fields); }
+  template <typename Fields> void refresh(Fields fields) {
+    const detail::ProfileScope profiled("periodic images refresh");
+    refreshImages(images_, fields);
+  }
 
   /// A Sum is exact (the loop's per-thread sums, merged); Min and Max go by id.
   double reduce(const Column<std::uint64_t> &ids, const std::vector<double> &values,

@@ -57,17 +57,27 @@ public:
             typename SmoothingLength = backend::NoSmoothingLength>
   void search(Particles &P, const backend::SearchGeometry &at, const ::wash::detail::Box &box,
               Fields fields, SmoothingLength h = {}) {
-    redistribute(P, domain_, halo_);
+    const ::wash::detail::ProfileScope profiled("neighbour search");
+    {
+      const ::wash::detail::ProfileScope migration("particle migration (MPI)");
+      redistribute(P, domain_, halo_);
+    }
     const RowReach<SmoothingLength> reachOf{at, h};
     backend::addImages<D>(P, halo_.owned, box, reachOf, halo_, &combineMax);
-    buildHalo(P, domain_, reachOf, box, halo_, fields);
+    {
+      const ::wash::detail::ProfileScope exchange("halo exchange (MPI)");
+      buildHalo(P, domain_, reachOf, box, halo_, fields);
+    }
     grid_.sort(P.pos, P.id, at.cellSize, order_);
     P.forEachColumn([this](auto &column) { backend::permute(column, order_); });
     halo_.permuted(order_);
   }
 
   /// Local images, then the halo copies of the columns `fields` visits.
-  template <typename Fields> void refresh(Fields fields) { exchange(halo_, fields); }
+  template <typename Fields> void refresh(Fields fields) {
+    const ::wash::detail::ProfileScope profiled("halo exchange (MPI)");
+    exchange(halo_, fields);
+  }
 
   /// Collective. A Sum adds every rank's exact sum (a fixed-size
   /// MPI_Allreduce, whatever the particle count); Min and Max reduce locally.

@@ -3,6 +3,7 @@
 
 #include <wash/backend/columns.hpp>
 #include <wash/detail/exact_sum.hpp>
+#include <wash/detail/profile.hpp>
 
 #include <omp.h>
 
@@ -12,6 +13,9 @@
 #include <vector>
 
 namespace wash::openmp {
+
+/// The summary weighs the steps' CPU time against this many threads.
+inline const bool loopThreadsSet = (detail::loopThreads = omp_get_max_threads(), true);
 
 /// Particles per dynamic chunk: 256, or a 64th of a thread's share when that
 /// is more. A thread's chunk reads its neighbours from the rows of cells

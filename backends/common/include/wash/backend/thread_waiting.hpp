@@ -1,0 +1,42 @@
+//===- wash/backend/thread_waiting.hpp - threads that wait, sleep -*- C++ -*-===//
+//
+// An OpenMP thread that runs out of work spins for the next parallel region:
+// libgomp's default is 300,000 spins (milliseconds), libomp's 200 ms. On a
+// machine whose cores are busy with other processes that spinning takes the
+// core from the thread it waits for: the seed at 2 threads beside one busy
+// process ran 10 times slower than at 1 (docs/performance.md, "Threads on a
+// shared machine"). A generated program therefore bounds the spin. The OpenMP
+// runtime reads its settings once, in its own constructor, before any of the
+// program's code runs (and .preinit_array runs before libc has set up the
+// environment, so a setenv there is lost): the entry point sets them and
+// executes the program again, once, on the first thread of main. A setting
+// the user gave (OMP_WAIT_POLICY, GOMP_SPINCOUNT) is kept and nothing is
+// executed again; one thread never waits, so neither is it then.
+//
+//===----------------------------------------------------------------------===//
+#pragma once
+
+#include <wash/detail/profile.hpp>
+
+#include <cstdlib>
+
+#include <unistd.h>
+
+namespace wash::backend {
+
+/// libgomp: spin about as long as a short serial stretch between two
+/// kernels lasts (tens of microseconds), then sleep.
+inline constexpr const char *gompSpinCount = "1000";
+
+/// Called first thing in main: returns only when the OpenMP runtime already
+/// runs with the user's settings or the bounded spin (or if executing again
+/// failed: the program then runs as it would have).
+inline void boundThreadWaiting(char **argv) {
+  if (detail::loopThreads < 2 || std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT"))
+    return;
+  setenv("GOMP_SPINCOUNT", gompSpinCount, /*overwrite=*/1);
+  setenv("KMP_BLOCKTIME", "0", /*overwrite=*/0); // libomp (clang): sleep at once
+  execv("/proc/self/exe", argv);
+}
+
+} // namespace wash::backend
