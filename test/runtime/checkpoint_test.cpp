@@ -16,15 +16,16 @@ namespace fs = std::filesystem;
 namespace {
 
 CheckpointIdentity identity() {
-  return {"sim", identityHash("kernels: a"), 2, false, {{"id", 8}, {"density", 8}},
-          CheckpointWriter::Translated};
+  return {"sim", identityHash("kernels: a"),  2,
+          false, {{"id", 8}, {"density", 8}}, CheckpointWriter::Translated};
 }
 
 /// Rewrites a version 3 file as version 2 wrote it: no writer byte after the
 /// program hash (the identity's second string), its checksum recomputed; an
 /// index's last word, its one shard's checksum, replaced by `shardSum`.
 /// Returns the new checksum.
-std::uint64_t downgradeToVersion2(const std::string &path, const std::uint64_t *shardSum = nullptr) {
+std::uint64_t downgradeToVersion2(const std::string &path,
+                                  const std::uint64_t *shardSum = nullptr) {
   std::ifstream in(path, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), {});
   in.close();
@@ -196,8 +197,9 @@ TEST_F(Checkpoint, TheWriterIsNamedWhenAReferenceAndATranslatedProgramMeet) {
   EXPECT_NE(refusal(0, reference).find("written by a translated program"), std::string::npos);
   CheckpointIdentity translated = identity();
   translated.program = identityHash("kernels: b");
-  EXPECT_NE(indexRefusal(folder, translated).find("it was written by another program (kernels or "
-                                                  "columns differ"),
+  EXPECT_NE(indexRefusal(folder, translated)
+                .find("it was written by another program (kernels or "
+                      "columns differ"),
             std::string::npos)
       << indexRefusal(folder, translated);
 

@@ -197,14 +197,15 @@ TEST_F(RunTest, HeaderAndSummaryLines) {
                                "radius 0.5, 4 steps\nwash: 4 steps of 3 particles in "))
       << text;
   // Wall and CPU time of the steps, each per particle-step, and whose CPU.
-  EXPECT_TRUE(std::regex_search(text, std::regex("; steps alone [0-9]+\\.[0-9]{3} s, [0-9]+\\.[0-9] ns "
-                                                 "per particle-step wall, CPU [0-9]+\\.[0-9]{3} s, "
-                                                 "[0-9]+\\.[0-9] ns per particle-step \\(this "
-                                                 "process, 1 thread\\); output in ")))
+  EXPECT_TRUE(
+      std::regex_search(text, std::regex("; steps alone [0-9]+\\.[0-9]{3} s, [0-9]+\\.[0-9] ns "
+                                         "per particle-step wall, CPU [0-9]+\\.[0-9]{3} s, "
+                                         "[0-9]+\\.[0-9] ns per particle-step \\(this "
+                                         "process, 1 thread\\); output in ")))
       << text;
-  EXPECT_NE(text.find(" ns per particle-step (this process, 1 thread); output in " + out.string() +
-                      "\n"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find(" ns per particle-step (this process, 1 thread); output in " + out.string() + "\n"),
+      std::string::npos)
       << text;
   EXPECT_EQ(text.find("profile"), std::string::npos) << text; // only with --profile
 }
@@ -245,9 +246,9 @@ TEST_F(RunTest, TheProfileTablesEveryPhase) {
 }
 
 TEST_F(RunTest, BusyCoresAreToldFromIdleThreads) {
-  EXPECT_FALSE(detail::coresWereBusy(1.9, 1.0, 2, 5)); // every thread ran
-  EXPECT_FALSE(detail::coresWereBusy(1.0, 1.0, 2, 5)); // one slept: serial work
-  EXPECT_TRUE(detail::coresWereBusy(1.0, 1.0, 2, 400)); // preempted again and again
+  EXPECT_FALSE(detail::coresWereBusy(1.9, 1.0, 2, 5));      // every thread ran
+  EXPECT_FALSE(detail::coresWereBusy(1.0, 1.0, 2, 5));      // one slept: serial work
+  EXPECT_TRUE(detail::coresWereBusy(1.0, 1.0, 2, 400));     // preempted again and again
   EXPECT_TRUE(detail::coresWereBusy(13.0, 56.0, 2, 20000)); // the issue's run
   EXPECT_FALSE(detail::coresWereBusy(0.0, 0.0, 1, 0));
 }

@@ -139,7 +139,7 @@ ParsedArgs parseProgramOptions(int argc, char **argv) {
     if (name == "--quiet" || name == "--help" || name == "--profile") {
       if (inlineValue)
         throw OptionError("option '" + name + "' takes no value");
-      (name == "--quiet"   ? parsed.options.quiet
+      (name == "--quiet"  ? parsed.options.quiet
        : name == "--help" ? parsed.options.help
                           : parsed.options.profile) = true;
     } else if (takesValue(name)) {

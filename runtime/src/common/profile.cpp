@@ -13,9 +13,9 @@ namespace {
 struct Clocks {
   double wall = 0.0, cpu = 0.0;
   static Clocks now() {
-    return {std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-                .count(),
-            processCpuSeconds()};
+    return {
+        std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(),
+        processCpuSeconds()};
   }
 };
 
@@ -108,8 +108,8 @@ std::string profileTable(const std::vector<ProfiledPhase> &phases, std::uint64_t
   auto row = [&](const std::string &name, std::uint64_t calls, double w, double c) {
     std::snprintf(line, sizeof line, "  %-*s %9llu %10.4f %10.4f %6.1f%% %12.2f %10.4f\n",
                   int(width), name.c_str(), (unsigned long long)calls, w, w * perStep * 1e3,
-                  wall > 0 ? 100.0 * w / wall : 0.0, particleSteps > 0 ? w * 1e9 / particleSteps : 0.0,
-                  c);
+                  wall > 0 ? 100.0 * w / wall : 0.0,
+                  particleSteps > 0 ? w * 1e9 / particleSteps : 0.0, c);
     table += line;
   };
   std::uint64_t calls = 0;

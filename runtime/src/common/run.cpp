@@ -156,7 +156,10 @@ void Run::noteCheckpoint(std::uint64_t step) {
 }
 
 CheckpointIdentity Run::identity(std::vector<CheckpointField> fields) const {
-  return {runSettings().simulationName, program_, std::uint32_t(dimensions_), useFloat_,
+  return {runSettings().simulationName,
+          program_,
+          std::uint32_t(dimensions_),
+          useFloat_,
           std::move(fields),
           backend_ == "reference" ? CheckpointWriter::Reference : CheckpointWriter::Translated};
 }
@@ -285,7 +288,8 @@ void Run::startStepClocks() {
 }
 
 void Run::finish(const Frame &finalFrame) {
-  const std::vector<ProfiledPhase> phases = profiling ? profiledPhases() : std::vector<ProfiledPhase>{};
+  const std::vector<ProfiledPhase> phases =
+      profiling ? profiledPhases() : std::vector<ProfiledPhase>{};
   double seconds = progress_->finish();
   if (!output_)
     return;
@@ -301,7 +305,9 @@ void Run::finish(const Frame &finalFrame) {
     std::fflush(stdout);
     return;
   }
-  auto perParticleStep = [&](double s) { return particleSteps > 0 ? s * 1e9 / particleSteps : 0.0; };
+  auto perParticleStep = [&](double s) {
+    return particleSteps > 0 ? s * 1e9 / particleSteps : 0.0;
+  };
   std::printf("wash: %llu steps of %zu particles in %.2f s (%.3g particle-steps/s); "
               "steps alone %.3f s, %.1f ns per particle-step wall, CPU %.3f s, %.1f ns per "
               "particle-step (%s, %d thread%s); output in %s\n",

@@ -4,7 +4,7 @@
 // libgomp's default is 300,000 spins (milliseconds), libomp's 200 ms. On a
 // machine whose cores are busy with other processes that spinning takes the
 // core from the thread it waits for: the seed at 2 threads beside one busy
-// process ran 10 times slower than at 1 (docs/performance.md, "Threads on a
+// process ran 4-10 times slower than at 1 (docs/performance.md, "Threads on a
 // shared machine"). A generated program therefore bounds the spin. The OpenMP
 // runtime reads its settings once, in its own constructor, before any of the
 // program's code runs (and .preinit_array runs before libc has set up the
