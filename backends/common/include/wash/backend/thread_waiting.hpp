@@ -11,7 +11,8 @@
 // environment, so a setenv there is lost): the entry point sets them and
 // executes the program again, once, on the first thread of main. A setting
 // the user gave (OMP_WAIT_POLICY, GOMP_SPINCOUNT) is kept and nothing is
-// executed again; one thread never waits, so neither is it then.
+// executed again; one thread never waits, so neither is it then, nor under
+// valgrind (which would not follow). A debugger follows the second start.
 //
 //===----------------------------------------------------------------------===//
 #pragma once
@@ -19,6 +20,7 @@
 #include <wash/detail/profile.hpp>
 
 #include <cstdlib>
+#include <cstring>
 
 #include <unistd.h>
 
@@ -36,6 +38,10 @@ inline void boundThreadWaiting(char **argv) {
     return;
   setenv("GOMP_SPINCOUNT", gompSpinCount, /*overwrite=*/1);
   setenv("KMP_BLOCKTIME", "0", /*overwrite=*/0); // libomp (clang): sleep at once
+  // Under valgrind the program executed again would run without it.
+  const char *preloaded = std::getenv("LD_PRELOAD");
+  if (preloaded && std::strstr(preloaded, "vgpreload"))
+    return;
   execv("/proc/self/exe", argv);
 }
 
