@@ -101,9 +101,11 @@ static void storeLiveness(Model &M, Liveness L) {
   M.Findings.insert(M.Findings.end(), L.Findings.begin(), L.Findings.end());
 }
 
-static void storeHazards(Model &M, std::vector<FieldSet> Hazards) {
-  for (unsigned I = 0; I < M.Kernels.size(); ++I)
-    M.Kernels[I].Hazards = std::move(Hazards[I]);
+static void storeHazards(Model &M, std::vector<KernelHazards> Hazards) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].Hazards = std::move(Hazards[I].Snapshot);
+    M.Kernels[I].DisjointTypeWrites = std::move(Hazards[I].DisjointTypes);
+  }
 }
 
 static void storeSearchPlan(Model &M, SearchPlan P) {

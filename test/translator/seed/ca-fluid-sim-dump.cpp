@@ -52,7 +52,7 @@
 // CHECK-NEXT:    own-writes: vel pressure viscosity
 // CHECK-NEXT:    always-writes: vel pressure viscosity
 // CHECK-NEXT:    neighbour-reads: pos vel density nearDensity
-// CHECK-NEXT:    hazards: vel
+// CHECK-NEXT:    hazards: vel (writes own, reads neighbour)
 // CHECK-NEXT:    search: 0
 // CHECK-NEXT:    halo: pos vel density nearDensity
 // CHECK-NEXT:    halo-exchange: vel density nearDensity

@@ -100,8 +100,10 @@ struct Kernel {
   // Filled by findAlwaysWrites (update and force kernels): own fields set on
   // every path through the kernel.
   FieldSet AlwaysWrites;
-  // From findHazards: own writes also read through neighbours.
-  FieldSet Hazards;
+  // From findHazards: own writes also read through neighbours (a snapshot
+  // each), and those that need none since the kernel's particles and its
+  // neighbours are of different types.
+  FieldSet Hazards, DisjointTypeWrites;
   // From planNeighbourSearch (force kernels only).
   int SearchGroup = -1;
   // From planHalos (force kernels only): fields halo particles need, and
