@@ -160,7 +160,15 @@ void dumpModel(const Model &M, std::ostream &OS) {
       printSet(M, OS, "no-snapshot", K.DisjointTypeWrites, "    ", hazardReason(M, K, true));
     OS << "    search: " << K.SearchGroup << '\n';
     printSet(M, OS, "halo", K.HaloFields);
-    printSet(M, OS, "halo-exchange", K.HaloSends);
+    const bool Rebuilds = !K.HaloNewRowSends.empty();
+    printSet(M, OS, Rebuilds ? "halo-exchange (new rows)" : "halo-exchange",
+             Rebuilds ? K.HaloNewRowSends : K.HaloSends);
+    if (Rebuilds)
+      printSet(M, OS, "halo-exchange (rows kept from the previous search)", K.HaloSends);
+    if (!K.HaloCurrent.empty())
+      printSet(M, OS, "halo-not-sent", K.HaloCurrent, "    ",
+               Rebuilds ? "kept rows: not written since they were last sent"
+                        : "not written since they were last sent");
   }
 
   OS << "neighbour-searches\n";

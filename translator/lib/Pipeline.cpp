@@ -118,6 +118,8 @@ static void storeHalos(Model &M, std::vector<KernelHalo> Halos) {
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     M.Kernels[I].HaloFields = std::move(Halos[I].Fields);
     M.Kernels[I].HaloSends = std::move(Halos[I].Sends);
+    M.Kernels[I].HaloNewRowSends = std::move(Halos[I].NewRowSends);
+    M.Kernels[I].HaloCurrent = std::move(Halos[I].Current);
   }
 }
 

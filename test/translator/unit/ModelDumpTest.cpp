@@ -32,6 +32,8 @@ void analyse(Model &M) {
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     M.Kernels[I].HaloFields = Halos[I].Fields;
     M.Kernels[I].HaloSends = Halos[I].Sends;
+    M.Kernels[I].HaloNewRowSends = Halos[I].NewRowSends;
+    M.Kernels[I].HaloCurrent = Halos[I].Current;
   }
 }
 
