@@ -28,8 +28,8 @@ TEST(Hazards, UpdateKernelsHaveNone) {
 
 TEST(Hazards, NoneBetweenDisjointParticleTypes) {
   Model M;
-  M.Kernels.push_back(kernel(KernelKind::Force, "walls",
-                             {own("density", Mode::Write), neighbour("density")}));
+  M.Kernels.push_back(
+      kernel(KernelKind::Force, "walls", {own("density", Mode::Write), neighbour("density")}));
   M.Kernels[0].ParticleType = "wall";
   M.Kernels[0].NeighbourType = "fluid";
   summarise(M);
@@ -42,8 +42,8 @@ TEST(Hazards, KeptWhenTheTypesOverlap) {
   // The same type, or neighbours of every type: a written particle is read.
   for (const char *Neighbours : {"fluid", ""}) {
     Model M;
-    M.Kernels.push_back(kernel(KernelKind::Force, "fluid",
-                               {own("density", Mode::Write), neighbour("density")}));
+    M.Kernels.push_back(
+        kernel(KernelKind::Force, "fluid", {own("density", Mode::Write), neighbour("density")}));
     M.Kernels[0].ParticleType = "fluid";
     M.Kernels[0].NeighbourType = Neighbours;
     summarise(M);

@@ -9,8 +9,7 @@ namespace wash::tr {
 bool writesAndReadsDisjointTypes(const Kernel &K) {
   // Each particle has exactly one type, and a registration names one type
   // or every type (""): two named types are disjoint when they differ.
-  return !K.ParticleType.empty() && !K.NeighbourType.empty() &&
-         K.ParticleType != K.NeighbourType;
+  return !K.ParticleType.empty() && !K.NeighbourType.empty() && K.ParticleType != K.NeighbourType;
 }
 
 std::vector<KernelHazards> findHazards(const std::vector<Kernel> &Kernels) {

@@ -66,7 +66,8 @@ public:
       newSearch(P, at, box, fields.kept, carried, h);
     } else {
       history_.forget();
-      newSearch(P, at, box, fields, [](auto) {}, h);
+      const auto nothing = [](auto) {};
+      newSearch(P, at, box, fields, nothing, h);
     }
   }
 

@@ -221,8 +221,7 @@ void completeNewRows(Particles &P, const std::vector<std::vector<Index>> &send,
 /// with those `carried` visits, which a kept one takes from its previous
 /// copy. Call after redistribute and addImages: positions
 /// [0, plan.owned.size()) are owned, the rest up to P.size() are images.
-template <int D, typename Particles, typename SmoothingLength, typename Fields,
-          typename Carried>
+template <int D, typename Particles, typename SmoothingLength, typename Fields, typename Carried>
 void buildHalo(Particles &P, const Domain<D> &domain, const RowReach<SmoothingLength> &reachOf,
                const ::wash::detail::Box &box, HaloPlan &plan, Fields fields, Carried carried,
                HaloHistory &history) {
