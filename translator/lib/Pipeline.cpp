@@ -243,7 +243,7 @@ bool checkedStdout() {
   return false;
 }
 
-int runPipeline(const Options &Opts) {
+int runPipeline(const Options &Opts, TranslationFacts *Facts) {
   // Where to stop and print the model, if anywhere.
   std::optional<PassId> DumpAfter = Opts.DumpAfter;
   if (!DumpAfter && Opts.DumpModel)
@@ -262,11 +262,14 @@ int runPipeline(const Options &Opts) {
   M.SourceFile = Opts.Source;
   std::vector<GeneratedFile> Files;
   std::vector<std::string> Inputs;
+  std::vector<InputFile> HashedInputs;
   bool Failed = false;
   bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim,
                                           const IncludeDirectives &Includes) {
     AstRefs Refs;
     Inputs = inputFiles(Opts.Source, Includes);
+    if (Facts)
+      HashedInputs = hashedInputFiles(D.sourceManager(), Opts.Source, Includes);
     analyse(Ctx, D, Dim, DumpAfter, M, Refs);
     // Reported while the AST's source manager can still place them.
     for (const Finding &F : M.Findings)
@@ -301,7 +304,22 @@ int runPipeline(const Options &Opts) {
     llvm::errs() << "wash: error: " << Error << "\n";
     return 1;
   }
+  if (Facts)
+    *Facts = {std::move(HashedInputs), M.Sim.Dimension};
   return 0;
+}
+
+int inspectSimulation(const Options &Opts, TranslationFacts &Facts) {
+  bool Found = false;
+  bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim,
+                                          const IncludeDirectives &Includes) {
+    Facts.Inputs = hashedInputFiles(D.sourceManager(), Opts.Source, Includes);
+    if (std::optional<unsigned> Dimension = detectDimension(Ctx, D, Dim)) {
+      Facts.Dimension = *Dimension;
+      Found = !D.hasErrors();
+    }
+  });
+  return Parsed && Found ? 0 : 1;
 }
 
 } // namespace wash::tr
