@@ -96,7 +96,7 @@ std::string recordBuild(llvm::StringRef Entry, llvm::StringRef Configuration,
   for (const InputFile &In : Inputs) {
     // Not recordable: the build is made again next time.
     if (In.Hash.empty() || In.Path.find_first_of("\n\r") != std::string::npos)
-      return "";
+      return forgetBuild(Entry);
     Text += In.Hash + "  " + In.Path + "\n";
   }
   std::string Record = join(Entry, RecordName);
