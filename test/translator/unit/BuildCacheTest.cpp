@@ -1,6 +1,6 @@
 //===- BuildCacheTest.cpp - wash run's cache ------------------------------===//
-#include "wash/translator/Emit/ProjectManifest.h"
 #include "wash/translator/Run/BuildCache.h"
+#include "wash/translator/Emit/ProjectManifest.h"
 
 #include "llvm/ADT/SmallString.h"
 #include "llvm/Support/FileSystem.h"
