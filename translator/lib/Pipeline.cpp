@@ -140,7 +140,9 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   M.Sim.Dimension = *Dimension;
   if (Stop(PassId::DetectDimension))
     return;
-  std::optional<Registrations> Registered = collectSimulation(Ctx, D, M.Sim.Dimension, Refs);
+  // Every pass that follows calls shares the index, and its one budget.
+  ProgramIndex Index(Ctx);
+  std::optional<Registrations> Registered = collectSimulation(Index, D, M.Sim.Dimension, Refs);
   if (!Registered)
     return;
   storeRegistrations(M, std::move(*Registered));
@@ -148,7 +150,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
   if (!checkVariables(Ctx, D) || Stop(PassId::CheckVariables))
     return;
-  auto Accesses = inferAccesses(Ctx, D, Refs, M.Kernels, M.Types);
+  auto Accesses = inferAccesses(Index, D, Refs, M.Kernels, M.Types);
   if (!Accesses)
     return;
   for (unsigned I = 0; I < M.Kernels.size(); ++I)
@@ -160,10 +162,10 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   M.Distances = findNeighbourDistances(Ctx, D);
   if (Stop(PassId::FindNeighbourDistances))
     return;
-  M.Hoisted = findHoistable(Ctx, D, Refs, M.Kernels);
+  M.Hoisted = findHoistable(Index, D, Refs, M.Kernels);
   if (Stop(PassId::FindHoistable))
     return;
-  storeAlwaysWrites(M, findAlwaysWrites(Ctx, Refs, M.Kernels));
+  storeAlwaysWrites(M, findAlwaysWrites(Index, Refs, M.Kernels));
   if (Stop(PassId::FindAlwaysWrites))
     return;
 
