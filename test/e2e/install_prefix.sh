@@ -4,7 +4,8 @@
 # (not this build tree), and computes the same dump as its reference build;
 # wash_DIR=<prefix>/lib/cmake/wash finds it too. The project also uses wash's
 # SPH library (a particle helper of wash/sph/diagnostics.hpp), which the
-# installed wash rewrites from the installed headers.
+# installed wash rewrites from the installed headers. `wash run` from the
+# prefix builds it against the installed package.
 . "$(dirname "$0")/lib.sh"
 build_dir=$1 scene_dir=$2
 
@@ -41,6 +42,13 @@ grep -qF "wash_gen::" bld/sim.wash/user/wash/sph/diagnostics.hpp ||
 expect_exit 0 bld/sim-reference --steps 50 --quiet --dump reference.csv --out ref
 expect_exit 0 bld/sim --steps 50 --quiet --dump serial.csv --out ser
 cmp -s reference.csv serial.csv || fail "the installed wash's program differs from the reference: $(cmp reference.csv serial.csv)"
+
+# wash run from the prefix builds against the installed package.
+export XDG_CACHE_HOME="$work/cache"
+expect_exit 0 prefix/bin/wash run -I src/include src/multi_file.cpp -- --steps 50 --quiet --dump run.csv --out run
+cmp -s reference.csv run.csv || fail "wash run of the installed wash differs from the reference: $(cmp reference.csv run.csv)"
+grep -qxF "wash_DIR:PATH=$work/prefix/lib/cmake/wash" cache/wash/multi_file-serial-*/build/CMakeCache.txt ||
+  fail "wash run from the prefix did not build against the installed package"
 
 # wash_DIR names the package folder itself.
 expect_exit 0 cmake -S src -B bld2 -G Ninja -Dwash_DIR="$work/prefix/lib/cmake/wash"

@@ -19,7 +19,7 @@ static std::string fileNote(const Model &M, const SourcePos &P) {
 
 /// A set in field order, so the dump does not depend on name sorting.
 static void printSet(const Model &M, std::ostream &OS, const char *Label, const FieldSet &S,
-                     const char *Indent = "    ") {
+                     const char *Indent = "    ", const std::string &Why = "") {
   OS << Indent << Label << ":";
   if (S.empty())
     OS << " -";
@@ -31,6 +31,8 @@ static void printSet(const Model &M, std::ostream &OS, const char *Label, const 
   for (const std::string &N : S)
     if (!M.findField(N))
       OS << ' ' << N;
+  if (!S.empty() && !Why.empty())
+    OS << " (" << Why << ')';
   OS << '\n';
 }
 
@@ -82,6 +84,16 @@ static void printFieldTypes(const Model &M, std::ostream &OS, const FieldTypeUse
   OS << "    read-for: " << typeNames(M, U.ReadFor)
      << "; written-for: " << typeNames(M, U.WrittenFor)
      << "; never-read-for: " << typeNames(M, Unread) << '\n';
+}
+
+/// Why a force kernel's own writes read through neighbours need a snapshot,
+/// or (Disjoint) need none: the types it writes and reads.
+static std::string hazardReason(const Model &M, const Kernel &K, bool Disjoint) {
+  if (!M.typed())
+    return "writes own, reads neighbour";
+  auto Name = [](const std::string &T) { return T.empty() ? std::string("any type") : T; };
+  return "writes own " + Name(K.ParticleType) + ", reads neighbour " + Name(K.NeighbourType) +
+         (Disjoint ? ": disjoint types" : "");
 }
 
 void dumpModel(const Model &M, std::ostream &OS) {
@@ -142,10 +154,21 @@ void dumpModel(const Model &M, std::ostream &OS) {
     if (K.Kind != KernelKind::Force)
       continue;
     printSet(M, OS, "neighbour-reads", K.NeighbourReads);
-    printSet(M, OS, "hazards", K.Hazards);
+    printSet(M, OS, "hazards", K.Hazards, "    ", hazardReason(M, K, false));
+    // Only where types spared a snapshot, so that other dumps stay as they were.
+    if (!K.DisjointTypeWrites.empty())
+      printSet(M, OS, "no-snapshot", K.DisjointTypeWrites, "    ", hazardReason(M, K, true));
     OS << "    search: " << K.SearchGroup << '\n';
     printSet(M, OS, "halo", K.HaloFields);
-    printSet(M, OS, "halo-exchange", K.HaloSends);
+    const bool Rebuilds = !K.HaloNewRowSends.empty();
+    printSet(M, OS, Rebuilds ? "halo-exchange (new rows)" : "halo-exchange",
+             Rebuilds ? K.HaloNewRowSends : K.HaloSends);
+    if (Rebuilds)
+      printSet(M, OS, "halo-exchange (rows kept from the previous search)", K.HaloSends);
+    if (!K.HaloCurrent.empty())
+      printSet(M, OS, "halo-not-sent", K.HaloCurrent, "    ",
+               Rebuilds ? "kept rows: not written since they were last sent"
+                        : "not written since they were last sent");
   }
 
   OS << "neighbour-searches\n";

@@ -101,9 +101,11 @@ static void storeLiveness(Model &M, Liveness L) {
   M.Findings.insert(M.Findings.end(), L.Findings.begin(), L.Findings.end());
 }
 
-static void storeHazards(Model &M, std::vector<FieldSet> Hazards) {
-  for (unsigned I = 0; I < M.Kernels.size(); ++I)
-    M.Kernels[I].Hazards = std::move(Hazards[I]);
+static void storeHazards(Model &M, std::vector<KernelHazards> Hazards) {
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].Hazards = std::move(Hazards[I].Snapshot);
+    M.Kernels[I].DisjointTypeWrites = std::move(Hazards[I].DisjointTypes);
+  }
 }
 
 static void storeSearchPlan(Model &M, SearchPlan P) {
@@ -116,6 +118,8 @@ static void storeHalos(Model &M, std::vector<KernelHalo> Halos) {
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     M.Kernels[I].HaloFields = std::move(Halos[I].Fields);
     M.Kernels[I].HaloSends = std::move(Halos[I].Sends);
+    M.Kernels[I].HaloNewRowSends = std::move(Halos[I].NewRowSends);
+    M.Kernels[I].HaloCurrent = std::move(Halos[I].Current);
   }
 }
 
@@ -140,7 +144,9 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   M.Sim.Dimension = *Dimension;
   if (Stop(PassId::DetectDimension))
     return;
-  std::optional<Registrations> Registered = collectSimulation(Ctx, D, M.Sim.Dimension, Refs);
+  // Every pass that follows calls shares the index, and its one budget.
+  ProgramIndex Index(Ctx);
+  std::optional<Registrations> Registered = collectSimulation(Index, D, M.Sim.Dimension, Refs);
   if (!Registered)
     return;
   storeRegistrations(M, std::move(*Registered));
@@ -148,7 +154,7 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
     return;
   if (!checkVariables(Ctx, D) || Stop(PassId::CheckVariables))
     return;
-  auto Accesses = inferAccesses(Ctx, D, Refs, M.Kernels, M.Types);
+  auto Accesses = inferAccesses(Index, D, Refs, M.Kernels, M.Types);
   if (!Accesses)
     return;
   for (unsigned I = 0; I < M.Kernels.size(); ++I)
@@ -160,10 +166,10 @@ static void analyse(clang::ASTContext &Ctx, Diagnoser &D, unsigned ParsedDim,
   M.Distances = findNeighbourDistances(Ctx, D);
   if (Stop(PassId::FindNeighbourDistances))
     return;
-  M.Hoisted = findHoistable(Ctx, D, Refs, M.Kernels);
+  M.Hoisted = findHoistable(Index, D, Refs, M.Kernels);
   if (Stop(PassId::FindHoistable))
     return;
-  storeAlwaysWrites(M, findAlwaysWrites(Ctx, Refs, M.Kernels));
+  storeAlwaysWrites(M, findAlwaysWrites(Index, Refs, M.Kernels));
   if (Stop(PassId::FindAlwaysWrites))
     return;
 
@@ -243,7 +249,7 @@ bool checkedStdout() {
   return false;
 }
 
-int runPipeline(const Options &Opts) {
+int runPipeline(const Options &Opts, TranslationFacts *Facts) {
   // Where to stop and print the model, if anywhere.
   std::optional<PassId> DumpAfter = Opts.DumpAfter;
   if (!DumpAfter && Opts.DumpModel)
@@ -262,11 +268,14 @@ int runPipeline(const Options &Opts) {
   M.SourceFile = Opts.Source;
   std::vector<GeneratedFile> Files;
   std::vector<std::string> Inputs;
+  std::vector<InputFile> HashedInputs;
   bool Failed = false;
   bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim,
                                           const IncludeDirectives &Includes) {
     AstRefs Refs;
     Inputs = inputFiles(Opts.Source, Includes);
+    if (Facts)
+      HashedInputs = hashedInputFiles(D.sourceManager(), Opts.Source, Includes);
     analyse(Ctx, D, Dim, DumpAfter, M, Refs);
     // Reported while the AST's source manager can still place them.
     for (const Finding &F : M.Findings)
@@ -301,7 +310,22 @@ int runPipeline(const Options &Opts) {
     llvm::errs() << "wash: error: " << Error << "\n";
     return 1;
   }
+  if (Facts)
+    *Facts = {std::move(HashedInputs), M.Sim.Dimension};
   return 0;
+}
+
+int inspectSimulation(const Options &Opts, TranslationFacts &Facts) {
+  bool Found = false;
+  bool Parsed = parseSimulation(Opts, [&](clang::ASTContext &Ctx, Diagnoser &D, unsigned Dim,
+                                          const IncludeDirectives &Includes) {
+    Facts.Inputs = hashedInputFiles(D.sourceManager(), Opts.Source, Includes);
+    if (std::optional<unsigned> Dimension = detectDimension(Ctx, D, Dim)) {
+      Facts.Dimension = *Dimension;
+      Found = !D.hasErrors();
+    }
+  });
+  return Parsed && Found ? 0 : 1;
 }
 
 } // namespace wash::tr

@@ -1,8 +1,12 @@
 //===- wash.cpp - the wash command ----------------------------------------===//
 //
 // wash [options] <simulation.cpp> [-- <compiler flags>]
+// wash run [options] <simulation.cpp> [-- <program options>]   (RunCommand.cpp)
+// wash cache clean
 //
 //===----------------------------------------------------------------------===//
+#include "RunCommand.h"
+
 #include "wash/translator/Pipeline.h"
 
 #include "llvm/ADT/ArrayRef.h"
@@ -12,6 +16,7 @@
 #include "llvm/Support/InitLLVM.h"
 #include "llvm/Support/raw_ostream.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -72,18 +77,23 @@ int main(int Argc, const char **Argv) {
   for (const wash::tr::BackendInfo &B : wash::tr::allBackends())
     TargetBackend.getParser().addLiteralOption(B.Name, B.Id, B.Description);
   cl::HideUnrelatedOptions(WashCategory);
+  wash::tr::registerSubcommands();
   cl::SetVersionPrinter(
       [](raw_ostream &OS) { OS << "wash " WASH_VERSION " (LLVM " LLVM_VERSION_STRING ")\n"; });
   if (!cl::ParseCommandLineOptions(Ours, Argv,
                                    "wash: translates a wash SPH simulation into a specialised "
                                    "program\n\n  wash [options] <simulation.cpp> [-- <compiler "
-                                   "flags>]\n"))
+                                   "flags>]\n  wash run [options] <simulation.cpp> [-- <program "
+                                   "options>]\n  wash cache clean\n"))
     return 1;
+  std::string Executable = sys::fs::getMainExecutable(Argv[0], reinterpret_cast<void *>(&main));
+  std::vector<std::string> AfterDashes(Argv + std::min(Ours + 1, Argc), Argv + Argc);
+  if (std::optional<int> Status = wash::tr::runSubcommand(AfterDashes, Executable))
+    return *Status;
 
   wash::tr::Options Opts;
   Opts.Source = Source;
-  for (int I = Ours + 1; I < Argc; ++I)
-    Opts.CompilerArgs.push_back(Argv[I]);
+  Opts.CompilerArgs = std::move(AfterDashes);
   Opts.Target = TargetBackend;
   Opts.OutputDir = OutputDir;
   Opts.DepFile = DepFile;
@@ -92,6 +102,6 @@ int main(int Argc, const char **Argv) {
   Opts.Force = Force;
   if (DumpAfter.getNumOccurrences())
     Opts.DumpAfter = wash::tr::findPass(DumpAfter);
-  Opts.ExecutablePath = sys::fs::getMainExecutable(Argv[0], reinterpret_cast<void *>(&main));
+  Opts.ExecutablePath = Executable;
   return wash::tr::runPipeline(Opts);
 }

@@ -1,6 +1,9 @@
 // The MPI halo plan: a field only read on the particle itself never travels;
 // a field read through neighbours is sent once, before the first kernel that
-// needs it after it changed; a new neighbour search rebuilds the halo.
+// needs it after it changed; a new neighbour search rebuilds the halo, whose
+// rows kept from the previous search receive what changed (and pos), and
+// whose new rows receive every field current on the kept ones that is read
+// before it is written again.
 // RUN: %wash --dump-model %s 2>/dev/null | FileCheck %s
 #include <wash/wash.hpp>
 #include <vector>
@@ -13,7 +16,9 @@ void Density(wash::Particle &p, const std::vector<wash::Particle> &ns) {
 }
 // CHECK-LABEL: force Density
 // CHECK:      halo: pos mass
-// CHECK-NEXT: halo-exchange: pos mass
+// CHECK-NEXT: halo-exchange (new rows): pos mass{{$}}
+// CHECK-NEXT: halo-exchange (rows kept from the previous search): pos{{$}}
+// CHECK-NEXT: halo-not-sent: mass (kept rows: not written since they were last sent)
 
 void Pressure(wash::Particle &p, const std::vector<wash::Particle> &ns) {
   double s = p.get_force_scalar("heat");
@@ -24,7 +29,8 @@ void Pressure(wash::Particle &p, const std::vector<wash::Particle> &ns) {
 // Density changed since the halo was built; mass did not; heat is own-only.
 // CHECK-LABEL: force Pressure
 // CHECK:      halo: pos density mass
-// CHECK-NEXT: halo-exchange: density
+// CHECK-NEXT: halo-exchange: density{{$}}
+// CHECK-NEXT: halo-not-sent: pos mass (not written since they were last sent)
 
 void Smooth(wash::Particle &p, const std::vector<wash::Particle> &ns) {
   double s = 0;
@@ -45,8 +51,12 @@ void Again(wash::Particle &p, const std::vector<wash::Particle> &ns) {
   p.set_force_scalar("heat", s);
 }
 // CHECK-LABEL: force Again
+// Density was sent before Pressure and not written since; mass is still
+// current on the kept rows, and read by Density before anything writes it.
 // CHECK:      halo: pos density
-// CHECK-NEXT: halo-exchange: pos density
+// CHECK-NEXT: halo-exchange (new rows): pos density mass{{$}}
+// CHECK-NEXT: halo-exchange (rows kept from the previous search): pos{{$}}
+// CHECK-NEXT: halo-not-sent: density (kept rows: not written since they were last sent)
 
 int main() {
   wash::set_influence_radius(0.1);

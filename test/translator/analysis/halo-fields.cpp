@@ -17,4 +17,6 @@ int main() {
 }
 // CHECK:      own-reads: mass
 // CHECK:      halo: pos density t
-// CHECK:      halo-exchange: pos density t
+// CHECK:      halo-exchange (new rows): pos density t
+// Kept halo rows: density is not written, t is.
+// CHECK-NEXT: halo-exchange (rows kept from the previous search): pos t{{$}}

@@ -16,6 +16,7 @@
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: // Neighbours read mass and pos.
 // CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(),
+// CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); },
 // CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); send(P.mass); });
 // CHECK: backend.forEachParticleChecked([](Index i) {
 // CHECK-LABEL: // Pressure: force kernel, reuses the neighbour search of 'Density'

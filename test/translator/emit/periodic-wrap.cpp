@@ -2,7 +2,7 @@
 // only after those; the neighbour search (the backend's) adds periodic images.
 // RUN: rm -rf %t && %wash --backend=serial -o %t %s 2>/dev/null
 // RUN: grep -vE '^// [A-Z-]+:' %t/periodic-wrap.serial.cpp | FileCheck %s
-// CHECK: backend.search(P, at, box, fields);
+// CHECK: backend.search(P, at, box, wash::backend::HaloColumns<Kept, Fresh>{kept, fresh});
 // CHECK-LABEL: // Count: force kernel, new neighbour search
 // CHECK-NOT: wrapPositions
 // CHECK-LABEL: // Drift: update kernel

@@ -18,7 +18,7 @@
 // HEADER-NEXT:   f(mass);
 // HEADER-NEXT:   f(smoothing_length);
 // HEADER-NEXT: }
-// CHECK: backend.search(P, at, box, fields);
+// CHECK: backend.search(P, at, box, wash::backend::HaloColumns<Kept, Fresh>{kept, fresh});
 // MPI: template <typename F> void forEachColumn(F f) {
 // MPI-NOT: forEachReorderedColumn
 #include <wash/wash.hpp>

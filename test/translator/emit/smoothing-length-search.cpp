@@ -9,7 +9,7 @@
 // CHECK: wash::backend::NeighbourTable<3, Stored> table;
 // The backend's search reads the smoothing lengths (an MPI halo reaches only
 // as far as each particle's pairs).
-// CHECK: backend.search(P, at, box, fields, [](std::uint32_t row) { return double(P.smoothing_length[row]); });
+// CHECK: backend.search(P, at, box, wash::backend::HaloColumns<Kept, Fresh>{kept, fresh}, [](std::uint32_t row) { return double(P.smoothing_length[row]); });
 // CHECK: table.build(backend.grid(), P.pos, P.id, P.smoothing_length, at, backend.owned());
 // CHECK: .floatStorage = false, .smoothingLengthSearch = true,
 // CHECK-LABEL: // Density: force kernel, new neighbour search

@@ -9,7 +9,8 @@
 // CHECK-LABEL: // Smooth: force kernel, new neighbour search
 // CHECK-NEXT: // Neighbours read pos and vel.
 // CHECK-NEXT: search(wash::backend::fixedGeometry(run.radius()), run.box(),
-// CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); send(P.vel); });
+// CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); },
+// CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); send(P.density); send(P.vel); });
 // CHECK-NEXT: vel_snapshot = P.vel; // written here, read through neighbours
 // CHECK-NEXT: vel_neighbour = vel_snapshot.data();
 // CHECK-LABEL: // Measure: force kernel, reuses the neighbour search of 'Smooth'

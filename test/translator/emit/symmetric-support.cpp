@@ -10,11 +10,13 @@
 // CHECK-LABEL: // Density: force kernel, new neighbour search
 // CHECK-NEXT: // Neighbours read pos and smoothing_length.
 // CHECK-NEXT: search(wash::backend::smoothingGeometry(run.support(), P.smoothing_length, P.id, backend.owned(), run.box(), 2, step, "Density", &Backend::combineMax, true), run.box(),
+// CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); },
 // CHECK-NEXT: [](auto send) { send(P.id); send(P.pos); send(P.smoothing_length); });
 // CHECK: ::Density(self, table.list(i));
 // MPI-LABEL: // Density: force kernel, new neighbour search
 // MPI-NEXT: // Neighbours read pos and smoothing_length.
 // MPI-NEXT: search(wash::backend::smoothingGeometry({{.*}}"Density", &Backend::combineMax, true), run.box(),
+// MPI-NEXT: [](auto send) { send(P.id); send(P.pos); },
 // MPI-NEXT: [](auto send) { send(P.id); send(P.pos); send(P.smoothing_length); });
 #include <wash/wash.hpp>
 #include <vector>

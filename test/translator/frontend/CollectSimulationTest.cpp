@@ -16,7 +16,8 @@ std::vector<std::string> forcesOf(const std::string &Code, bool &Ok) {
   std::vector<std::string> Names;
   withAst(Code, [&](ASTContext &Ctx, Diagnoser &D) {
     AstRefs Refs;
-    std::optional<Registrations> R = collectSimulation(Ctx, D, 2, Refs);
+    ProgramIndex Index(Ctx);
+    std::optional<Registrations> R = collectSimulation(Index, D, 2, Refs);
     Ok = R.has_value();
     if (R)
       for (const ForceRegistration &F : R->Forces)

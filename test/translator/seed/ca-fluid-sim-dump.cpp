@@ -46,16 +46,18 @@
 // CHECK-NEXT:    hazards: -
 // CHECK-NEXT:    search: 0
 // CHECK-NEXT:    halo: pos
-// CHECK-NEXT:    halo-exchange: pos
+// CHECK-NEXT:    halo-exchange (new rows): pos
+// CHECK-NEXT:    halo-exchange (rows kept from the previous search): pos
 // CHECK-NEXT:  3: force force_kernel @106:5
 // CHECK-NEXT:    own-reads: pos vel density nearDensity
 // CHECK-NEXT:    own-writes: vel pressure viscosity
 // CHECK-NEXT:    always-writes: vel pressure viscosity
 // CHECK-NEXT:    neighbour-reads: pos vel density nearDensity
-// CHECK-NEXT:    hazards: vel
+// CHECK-NEXT:    hazards: vel (writes own, reads neighbour)
 // CHECK-NEXT:    search: 0
 // CHECK-NEXT:    halo: pos vel density nearDensity
 // CHECK-NEXT:    halo-exchange: vel density nearDensity
+// CHECK-NEXT:    halo-not-sent: pos (not written since they were last sent)
 // CHECK-NEXT:  4: update UpdatePositions @107:5
 // CHECK-NEXT:    own-reads: vel position
 // CHECK-NEXT:    own-writes: position

@@ -103,6 +103,7 @@ TEST(EmitDriver, SearchAndRefreshCarryWhatNeighboursReadAndSayWhy) {
   const std::string Text = driverFor(seedLikeModel(), Backend::Serial);
   EXPECT_NE(Text.find("    // Neighbours read pos.\n"
                       "    search(wash::backend::fixedGeometry(run.radius()), run.box(),\n"
+                      "           [](auto send) { send(P.id); send(P.pos); },\n"
                       "           [](auto send) { send(P.id); send(P.pos); });\n"),
             std::string::npos)
       << Text;

@@ -34,9 +34,11 @@ Model withHoist(std::vector<Access> ForceAccesses) {
 
 std::vector<HoistedExpr> kept(Model &M) {
   summarise(M);
-  std::vector<FieldSet> Hazards = findHazards(M.Kernels);
-  for (unsigned I = 0; I < M.Kernels.size(); ++I)
-    M.Kernels[I].Hazards = Hazards[I];
+  std::vector<KernelHazards> Hazards = findHazards(M.Kernels);
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].Hazards = Hazards[I].Snapshot;
+    M.Kernels[I].DisjointTypeWrites = Hazards[I].DisjointTypes;
+  }
   return planHoists(M.Hoisted, M.Kernels);
 }
 

@@ -22,14 +22,18 @@ void analyse(Model &M) {
     M.Fields[I].Live = L.Fields[I].Live;
     M.Fields[I].OutputOnly = L.Fields[I].OutputOnly;
   }
-  std::vector<FieldSet> Hazards = findHazards(M.Kernels);
-  for (unsigned I = 0; I < M.Kernels.size(); ++I)
-    M.Kernels[I].Hazards = Hazards[I];
+  std::vector<KernelHazards> Hazards = findHazards(M.Kernels);
+  for (unsigned I = 0; I < M.Kernels.size(); ++I) {
+    M.Kernels[I].Hazards = Hazards[I].Snapshot;
+    M.Kernels[I].DisjointTypeWrites = Hazards[I].DisjointTypes;
+  }
   planSearches(M);
   std::vector<KernelHalo> Halos = planHalos(M.Kernels, M.Searches);
   for (unsigned I = 0; I < M.Kernels.size(); ++I) {
     M.Kernels[I].HaloFields = Halos[I].Fields;
     M.Kernels[I].HaloSends = Halos[I].Sends;
+    M.Kernels[I].HaloNewRowSends = Halos[I].NewRowSends;
+    M.Kernels[I].HaloCurrent = Halos[I].Current;
   }
 }
 
@@ -61,7 +65,7 @@ TEST(ModelDump, ForceKernelSection) {
                      "    own-writes: t\n"
                      "    always-writes: -\n"
                      "    neighbour-reads: t\n"
-                     "    hazards: t\n"
+                     "    hazards: t (writes own, reads neighbour)\n"
                      "    search: 0\n"
                      "    halo: pos t\n"),
             std::string::npos)

@@ -122,7 +122,7 @@ std::string CodePlan::writeText(const std::string &Name, const std::string &Obje
 
 std::optional<std::string> CodePlan::distanceText(const SourcePos &P,
                                                   const std::string &Written) const {
-  auto It = DistanceAt.find({P.Line, P.Col});
+  auto It = DistanceAt.find({P.File, P.Line, P.Col});
   if (It == DistanceAt.end())
     return std::nullopt;
   const DistanceUse &U = *It->second;
@@ -210,7 +210,7 @@ CodePlan planCode(const Model &M, Backend Target, const std::string &Stem) {
     Plan.Hoisted.push_back(&H);
   }
   for (const DistanceUse &U : M.Distances)
-    Plan.DistanceAt[{U.Call.Line, U.Call.Col}] = &U;
+    Plan.DistanceAt[{U.Call.File, U.Call.Line, U.Call.Col}] = &U;
   return Plan;
 }
 

@@ -7,9 +7,7 @@
 
 namespace wash::tr {
 
-/// Name as a CMake target or project name, which allow only these characters
-/// (CMP0037): a file called "my sim.cpp" gives the target my_sim-serial.
-static std::string cmakeName(const std::string &Name) {
+std::string cmakeName(const std::string &Name) {
   std::string Out = Name;
   for (char &C : Out)
     if (!((C >= 'a' && C <= 'z') || (C >= 'A' && C <= 'Z') || (C >= '0' && C <= '9') || C == '_' ||
@@ -18,9 +16,7 @@ static std::string cmakeName(const std::string &Name) {
   return Out;
 }
 
-/// Text as a CMake argument: quoted unless it is a plain name, with \, ",
-/// $ and ; escaped (";" would otherwise split a list of sources).
-static std::string cmakeArgument(const std::string &Text) {
+std::string cmakeArgument(const std::string &Text) {
   if (cmakeName(Text) == Text)
     return Text;
   std::string Out = "\"";
@@ -49,8 +45,12 @@ std::string unbuildableStemReason(const std::string &Stem) {
   return "";
 }
 
+std::string programTargetName(const std::string &Stem, Backend Target) {
+  return cmakeName(Stem + "-" + backendName(Target));
+}
+
 std::string emitCMakeLists(const CodePlan &Plan, const std::vector<std::string> &PackageHints) {
-  std::string Target = cmakeName(Plan.Stem + "-" + backendName(Plan.Target));
+  std::string Target = programTargetName(Plan.Stem, Plan.Target);
   std::ostringstream OS;
   OS << generatedBanner(Plan, "#") << "cmake_minimum_required(VERSION 3.20)\n"
      << "project(" << cmakeName(Plan.Stem) << "_" << backendName(Plan.Target) << " LANGUAGES CXX)\n"

@@ -20,10 +20,11 @@ namespace {
 
 /// The columns the new search before K carries to the copies neighbours read
 /// (periodic images, halos): ids and positions, to find and order
-/// neighbours, and whatever else K's neighbours read.
-std::vector<std::string> searchColumns(const Kernel &K) {
+/// neighbours, and Sends (to halo rows kept from the previous search,
+/// Kernel::HaloSends, or to new ones, Kernel::HaloNewRowSends).
+std::vector<std::string> searchColumns(const FieldSet &Sends) {
   std::vector<std::string> Columns = {"id", "pos"};
-  for (const std::string &F : K.HaloSends)
+  for (const std::string &F : Sends)
     if (F != "pos" && F != "id")
       Columns.push_back(F);
   return Columns;
@@ -35,7 +36,8 @@ void emitForceSetUp(std::ostream &OS, const Model &M, const CodePlan &Plan, unsi
     std::vector<std::string> NeighbourReads(Kn.HaloFields.begin(), Kn.HaloFields.end());
     OS << "    // Neighbours read " << fieldList(NeighbourReads) << ".\n"
        << "    search(" << searchGeometryText(Plan, Kn) << ", run.box(),\n"
-       << "           " << columnsVisitor(Plan, searchColumns(Kn)) << ");\n";
+       << "           " << columnsVisitor(Plan, searchColumns(Kn.HaloSends)) << ",\n"
+       << "           " << columnsVisitor(Plan, searchColumns(Kn.HaloNewRowSends)) << ");\n";
   } else if (!Kn.HaloSends.empty()) {
     std::vector<std::string> Sends(Kn.HaloSends.begin(), Kn.HaloSends.end());
     OS << "    // Neighbours read " << fieldList(Sends) << ", written since they were sent.\n"
@@ -121,13 +123,15 @@ std::string emitDriver(const Model &M, const CodePlan &Plan,
      << "Backend backend; // which rows are real particles, the cell grid, images, halos\n"
      << neighbourTableDeclaration(Plan) << typeRowsDeclaration(Plan) << "\n";
   emitParticleBytes(OS, Plan);
-  OS << "/// A neighbour search (docs/semantics.md): `fields` visits the columns the\n"
-     << "/// copies neighbours read (periodic images, halos) must carry.\n"
-     << "template <typename Fields>\n"
+  OS << "/// A neighbour search (docs/semantics.md): `kept` and `fresh` visit the\n"
+     << "/// columns the copies neighbours read (periodic images, halos) must carry:\n"
+     << "/// to halo rows kept from the previous search, and to the others.\n"
+     << "template <typename Kept, typename Fresh>\n"
      << "void search(const " << rt::SearchGeometry << " &at, const " << rt::Box << " &box,\n"
-     << "            Fields fields) {\n"
+     << "            Kept kept, Fresh fresh) {\n"
      << "  try {\n"
-     << "    backend.search(P, at, box, fields" << smoothingLengthAccessor(Plan) << ");\n"
+     << "    backend.search(P, at, box, " << rt::HaloColumns << "<Kept, Fresh>{kept, fresh}"
+     << smoothingLengthAccessor(Plan) << ");\n"
      << neighbourTableBuild(Plan) << typeRowsRebuild(Plan, "    ")
      << "  } catch (const std::bad_alloc &) {\n"
      << "    throw " << rt::OutOfMemory

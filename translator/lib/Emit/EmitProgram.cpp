@@ -28,20 +28,6 @@ std::string calleeName(const clang::FunctionDecl *FD) {
   return "::" + Name;
 }
 
-/// Where the generated CMakeLists.txt looks for wash: next to an installed
-/// translator first, then the build tree this translator was built in.
-std::vector<std::string> packageHints(const Options &Opts) {
-  std::vector<std::string> Hints;
-  llvm::SmallString<256> Installed(llvm::sys::path::parent_path(Opts.ExecutablePath));
-  llvm::sys::path::append(Installed, "..", "lib", "cmake", "wash");
-  llvm::sys::path::remove_dots(Installed, true);
-  if (llvm::sys::fs::exists(Installed + "/washConfig.cmake"))
-    Hints.push_back(std::string(Installed));
-  if (std::string(WASH_BUILD_PACKAGE_DIR) != "")
-    Hints.push_back(WASH_BUILD_PACKAGE_DIR);
-  return Hints;
-}
-
 std::string absolute(const std::string &Path) {
   llvm::SmallString<256> P(Path);
   llvm::sys::fs::make_absolute(P);
@@ -102,6 +88,18 @@ std::string withMacrosHidden(const std::string &Header, const std::vector<std::s
 
 } // namespace
 
+std::vector<std::string> packageHints(const std::string &ExecutablePath) {
+  std::vector<std::string> Hints;
+  llvm::SmallString<256> Installed(llvm::sys::path::parent_path(ExecutablePath));
+  llvm::sys::path::append(Installed, "..", "lib", "cmake", "wash");
+  llvm::sys::path::remove_dots(Installed, true);
+  if (llvm::sys::fs::exists(Installed + "/washConfig.cmake"))
+    Hints.push_back(std::string(Installed));
+  if (std::string(WASH_BUILD_PACKAGE_DIR) != "")
+    Hints.push_back(WASH_BUILD_PACKAGE_DIR);
+  return Hints;
+}
+
 bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const AstRefs &Refs,
                  const IncludeDirectives &Includes, const Options &Opts,
                  std::vector<GeneratedFile> &Files) {
@@ -130,7 +128,7 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
 
   Files = {{Plan.headerName(), withMacrosHidden(emitStorageHeader(M, Plan), Hidden)},
            {Plan.sourceName(), Source},
-           {"CMakeLists.txt", emitCMakeLists(Plan, packageHints(Opts))}};
+           {"CMakeLists.txt", emitCMakeLists(Plan, packageHints(Opts.ExecutablePath))}};
   // Each header the simulation includes, rewritten, keeps its file name and
   // line numbers the same way.
   for (size_t I = 1; I < Rewritten->size(); ++I) {

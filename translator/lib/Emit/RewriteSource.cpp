@@ -195,9 +195,8 @@ public:
   bool VisitCXXMemberCallExpr(CXXMemberCallExpr *E) {
     if (!inUserFile(E->getBeginLoc()))
       return true;
-    // Distance uses are found (by line and column) in the main file only.
-    if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID() &&
-        SM.isWrittenInMainFile(E->getBeginLoc()))
+    // Distance uses are keyed by file, line and column.
+    if (!Plan.DistanceAt.empty() && !E->getBeginLoc().isMacroID())
       if (auto Distance = Plan.distanceText(D.toPos(E->getBeginLoc()), text(E->getSourceRange())))
         return replace(E->getSourceRange(), *Distance);
     auto Accessor = particleAccessor(E->getMethodDecl());

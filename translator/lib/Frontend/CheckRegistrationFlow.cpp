@@ -76,7 +76,8 @@ static bool usesGoto(const Stmt *Body) {
 
 class FlowChecker {
 public:
-  FlowChecker(ASTContext &Ctx, Diagnoser &D) : Ctx(Ctx), D(D) {}
+  FlowChecker(ProgramIndex &Index, Diagnoser &D)
+      : Ctx(Index.context()), Index(Index), D(D), Walk(Index) {}
 
   void run(const FunctionDecl *Main) {
     enter(Main, /*Guard=*/0, /*Caller=*/0, /*InLoop=*/false);
@@ -120,11 +121,15 @@ private:
   }
 
   void enter(const FunctionDecl *FD, unsigned Guard, unsigned Caller, bool InLoop) {
-    if (Budget == 0)
-      return; // collectSimulation reports what it did not reach.
-    --Budget;
+    unsigned F = Frames.size();
+    if (auto Entry = Walk.push(FD, F); Entry != CallWalk<unsigned>::Entry::Entered) {
+      if (Entry == CallWalk<unsigned>::Entry::Recursive)
+        Frames[*Walk.find(FD)].Recursive = true;
+      else if (Index.firstOverrun()) // main is not all checked: never accept it so
+        D.report(DiagId::ProgramTooComplex, FD->getLocation(), {std::to_string(Index.budget())});
+      return;
+    }
     Frames.push_back({Caller, FD->getCanonicalDecl()});
-    unsigned F = Frames.size() - 1;
     Frames[F].UsesGoto = usesGoto(FD->getBody());
     Frames[F].FirstCall = Calls.size();
     Work.push_back({ItemKind::EndFrame, nullptr, 0, F, InLoop});
@@ -214,12 +219,8 @@ private:
       return;
     }
     const FunctionDecl *Def = FD->getDefinition();
-    if (!Def || !Def->hasBody() || !isUserCode(Ctx.getSourceManager(), Def))
+    if (!Def || !Def->hasBody() || !Index.isUserFunction(Def))
       return;
-    if (auto F = active(Def->getCanonicalDecl(), I.Frame)) {
-      Frames[*F].Recursive = true;
-      return;
-    }
     enter(Def, I.Guard, I.Frame, I.InLoop);
   }
 
@@ -237,16 +238,6 @@ private:
     return Set;
   }
 
-  /// The frame of FD on the current call chain, if FD is being walked.
-  std::optional<unsigned> active(const FunctionDecl *FD, unsigned F) const {
-    for (;; F = Frames[F].Parent) {
-      if (Frames[F].Function == FD)
-        return F;
-      if (F == 0)
-        return std::nullopt;
-    }
-  }
-
   bool inGotoFunction(unsigned F) const {
     for (;; F = Frames[F].Parent) {
       if (Frames[F].UsesGoto)
@@ -257,6 +248,7 @@ private:
   }
 
   void endFrame(unsigned F) {
+    Walk.pop();
     if (!Frames[F].Recursive)
       return;
     std::string Why = "in '" + Frames[F].Function->getQualifiedNameAsString() +
@@ -296,18 +288,19 @@ private:
   }
 
   ASTContext &Ctx;
+  ProgramIndex &Index;
   Diagnoser &D;
   std::vector<Guard> Guards{{0, ""}};
   std::vector<Frame> Frames;
   std::vector<Call> Calls;
   std::vector<Item> Work;
-  unsigned Budget = 10000;
+  CallWalk<unsigned> Walk; ///< The frames of the functions being walked.
 };
 
 } // namespace
 
-bool checkRegistrationFlow(ASTContext &Ctx, Diagnoser &D, const FunctionDecl *Main) {
-  FlowChecker(Ctx, D).run(Main);
+bool checkRegistrationFlow(ProgramIndex &Index, Diagnoser &D, const FunctionDecl *Main) {
+  FlowChecker(Index, D).run(Main);
   return !D.hasErrors();
 }
 

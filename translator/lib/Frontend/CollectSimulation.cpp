@@ -21,21 +21,21 @@ namespace {
 
 class Collector {
 public:
-  Collector(ASTContext &Ctx, Diagnoser &D, Registrations &M, AstRefs &Refs)
-      : Ctx(Ctx), D(D), M(M), Refs(Refs) {}
+  Collector(ProgramIndex &Index, Diagnoser &D, Registrations &M, AstRefs &Refs)
+      : Ctx(Index.context()), Index(Index), D(D), M(M), Refs(Refs), Walk(Index) {}
 
   /// Each call is walked where it happens, as if inlined: a helper called
   /// twice registers twice at run time too. Recursion and a budget against
-  /// hostile call trees bound the walk.
-  void walkFunction(const FunctionDecl *FD, bool InLoop) {
-    const FunctionDecl *Canon = FD->getCanonicalDecl();
-    if (!FD->hasBody() || Budget == 0 ||
-        std::find(Stack.begin(), Stack.end(), Canon) != Stack.end())
-      return;
-    --Budget;
-    Stack.push_back(Canon);
-    walk(FD->getBody(), InLoop);
-    Stack.pop_back();
+  /// hostile call trees bound the walk (the program index's).
+  void walkFunction(const FunctionDecl *FD, bool InLoop, SourceLocation At) {
+    if (FD->hasBody() &&
+        Walk.enter(FD, [&] { walk(FD->getBody(), InLoop); }) == CallWalk<>::Entry::OverBudget)
+      reportBudget(At);
+  }
+
+  void reportBudget(SourceLocation At) {
+    if (Index.firstOverrun())
+      D.report(DiagId::ProgramTooComplex, At, {std::to_string(Index.budget())});
   }
 
   /// Source locations of the registration calls the walk reached: compared by
@@ -126,12 +126,12 @@ private:
       return;
     }
     const FunctionDecl *Def = FD->getDefinition();
-    if (!Def || !isUserCode(Ctx.getSourceManager(), Def))
+    if (!Def || !Index.isUserFunction(Def))
       return;
     // The callee's parameters are bound to this call's arguments.
     CallContext Inner{CE, Def, Current};
     Current = &Inner;
-    walkFunction(Def, InLoop);
+    walkFunction(Def, InLoop, CE->getBeginLoc());
     Current = Inner.Outer;
   }
 
@@ -338,15 +338,15 @@ private:
   }
 
   ASTContext &Ctx;
+  ProgramIndex &Index;
   Diagnoser &D;
   Registrations &M;
   AstRefs &Refs;
-  std::vector<const FunctionDecl *> Stack;
+  CallWalk<> Walk;
   /// Registration calls reached so far.
   unsigned RegistrationCount = 0;
   /// The calls the walk followed to where it is: what binds the parameters.
   const CallContext *Current = nullptr;
-  unsigned Budget = 10000;
 };
 
 /// Registration calls and references in user code that the walk from main
@@ -389,17 +389,10 @@ private:
 
 } // namespace
 
-static const FunctionDecl *findMain(ASTContext &Ctx) {
-  for (const Decl *Dcl : Ctx.getTranslationUnitDecl()->decls())
-    if (const auto *FD = dyn_cast<FunctionDecl>(Dcl))
-      if (FD->isMain() && FD->isThisDeclarationADefinition())
-        return FD;
-  return nullptr;
-}
-
-std::optional<Registrations> collectSimulation(ASTContext &Ctx, Diagnoser &D, unsigned Dimension,
-                                               AstRefs &Refs) {
-  Refs.Main = findMain(Ctx);
+std::optional<Registrations> collectSimulation(ProgramIndex &Index, Diagnoser &D,
+                                               unsigned Dimension, AstRefs &Refs) {
+  ASTContext &Ctx = Index.context();
+  Refs.Main = Index.main();
   if (!Refs.Main) {
     SourceManager &SM = Ctx.getSourceManager();
     D.report(DiagId::NoMain, SM.getLocForStartOfFile(SM.getMainFileID()));
@@ -407,11 +400,13 @@ std::optional<Registrations> collectSimulation(ASTContext &Ctx, Diagnoser &D, un
   }
   Registrations M;
   M.Sim.Dimension = Dimension;
-  Collector C(Ctx, D, M, Refs);
-  C.walkFunction(Refs.Main, /*InLoop=*/false);
+  Collector C(Index, D, M, Refs);
+  C.walkFunction(Refs.Main, /*InLoop=*/false, Refs.Main->getLocation());
+  if (Index.overran())
+    return std::nullopt; // Reported: what the walk did not reach is unknown.
   Stragglers S(Ctx.getSourceManager(), D, C.Reached);
   S.TraverseAST(Ctx);
-  checkRegistrationFlow(Ctx, D, Refs.Main);
+  checkRegistrationFlow(Index, D, Refs.Main);
   if (!M.Sim.CallsStart)
     D.report(DiagId::MissingStart, Refs.Main->getLocation());
   if (D.hasErrors())

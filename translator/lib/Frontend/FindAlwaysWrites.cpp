@@ -43,42 +43,43 @@ Jumps jumpsIn(const Stmt *S) {
 
 class AlwaysWrites {
 public:
-  explicit AlwaysWrites(ASTContext &Ctx) : Ctx(Ctx) {}
+  explicit AlwaysWrites(ProgramIndex &Index) : Ctx(Index.context()), Index(Index), Walk(Index) {}
 
   /// The fields function FD sets on every path on the particle its parameter
   /// Self is bound to.
-  FieldSet of(const FunctionDecl *FD, unsigned Self, unsigned Depth = 0) {
+  FieldSet of(const FunctionDecl *FD, unsigned Self) {
     FieldSet Out;
     const FunctionDecl *Def = FD ? FD->getDefinition() : nullptr;
-    if (!Def || !Def->hasBody() || Self >= Def->getNumParams() || Depth > 16 ||
-        !isUserCode(Ctx.getSourceManager(), Def))
+    if (!Def || !Def->hasBody() || Self >= Def->getNumParams() || !Index.isUserFunction(Def))
       return Out;
     auto Key = std::make_pair(Def, Self);
     if (auto It = Memo.find(Key); It != Memo.end())
       return It->second;
-    Memo[Key] = {}; // recursion (reported elsewhere) counts nothing
-    if (!jumpsIn(Def->getBody()).Gotos)
-      block(Def->getBody(), Def->getParamDecl(Self), Depth, Out);
+    // Recursion (reported elsewhere) and a spent budget count nothing.
+    Walk.enter(Def, [&] {
+      if (!jumpsIn(Def->getBody()).Gotos)
+        block(Def->getBody(), Def->getParamDecl(Self), Out);
+    });
     return Memo[Key] = Out;
   }
 
 private:
   /// The statements of a block in order, up to the first that may return (the
   /// function has no goto).
-  void block(const Stmt *S, const ParmVarDecl *Self, unsigned Depth, FieldSet &Out) {
+  void block(const Stmt *S, const ParmVarDecl *Self, FieldSet &Out) {
     const auto *Block = dyn_cast<CompoundStmt>(S);
     if (!Block)
-      return statement(S, Self, Depth, Out);
+      return statement(S, Self, Out);
     for (const Stmt *Child : Block->body()) {
       if (jumpsIn(Child).Returns)
         return;
-      statement(Child, Self, Depth, Out);
+      statement(Child, Self, Out);
     }
   }
 
-  void statement(const Stmt *S, const ParmVarDecl *Self, unsigned Depth, FieldSet &Out) {
+  void statement(const Stmt *S, const ParmVarDecl *Self, FieldSet &Out) {
     if (isa<CompoundStmt>(S))
-      return block(S, Self, Depth, Out);
+      return block(S, Self, Out);
     const auto *E = dyn_cast<Expr>(S);
     if (!E)
       return; // if, loops, declarations...: nothing counts as always done
@@ -100,7 +101,7 @@ private:
     for (unsigned I = Skip; I < Call->getNumArgs(); ++I)
       if (isSelf(Call->getArg(I), Self) && I - Skip < Callee->getNumParams() &&
           Callee->getParamDecl(I - Skip)->getType()->isReferenceType()) {
-        FieldSet Inner = of(Callee, I - Skip, Depth + 1);
+        FieldSet Inner = of(Callee, I - Skip);
         Out.insert(Inner.begin(), Inner.end());
       }
   }
@@ -123,14 +124,16 @@ private:
   }
 
   ASTContext &Ctx;
+  ProgramIndex &Index;
+  CallWalk<> Walk;
   std::map<std::pair<const FunctionDecl *, unsigned>, FieldSet> Memo;
 };
 
 } // namespace
 
-std::vector<FieldSet> findAlwaysWrites(ASTContext &Ctx, const AstRefs &Refs,
+std::vector<FieldSet> findAlwaysWrites(ProgramIndex &Index, const AstRefs &Refs,
                                        const std::vector<Kernel> &Kernels) {
-  AlwaysWrites Finder(Ctx);
+  AlwaysWrites Finder(Index);
   std::vector<FieldSet> Out(Kernels.size());
   for (unsigned I = 0; I < Kernels.size(); ++I)
     if (Kernels[I].Kind == KernelKind::Update || Kernels[I].Kind == KernelKind::Force)

@@ -1,5 +1,6 @@
 //===- FindDistances.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/FindDistances.h"
+#include "wash/translator/Frontend/AstQueries.h"
 #include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/ParentMapContext.h"
@@ -36,24 +37,7 @@ bool isVecMagnitude(const CXXMemberCallExpr *MC) {
          vecDimension(MC->getImplicitObjectArgument()->getType());
 }
 
-/// E without the nodes that only convert, copy or parenthesise it.
-const Expr *strip(const Expr *E) {
-  for (unsigned Depth = 0; E && Depth < 32; ++Depth) {
-    E = E->IgnoreParenImpCasts();
-    if (const auto *M = dyn_cast<MaterializeTemporaryExpr>(E))
-      E = M->getSubExpr();
-    else if (const auto *B = dyn_cast<CXXBindTemporaryExpr>(E))
-      E = B->getSubExpr();
-    else if (const auto *F = dyn_cast<FullExpr>(E))
-      E = F->getSubExpr();
-    else if (const auto *C = dyn_cast<CXXConstructExpr>(E);
-             C && C->getNumArgs() == 1 && C->getConstructor()->isCopyOrMoveConstructor())
-      E = C->getArg(0);
-    else
-      return E;
-  }
-  return E;
-}
+const Expr *strip(const Expr *E) { return peel(E); }
 
 /// One end of an offset: a neighbour's position or the particle's.
 struct End {
@@ -180,13 +164,7 @@ private:
     return T->isReferenceType() && T.getNonReferenceType().isConstQualified();
   }
 
-  /// Every use of V reads it: converted to a value, passed by value or const
-  /// reference, or the object of a const member function.
-  bool neverModified(const VarDecl *V) {
-    bool ReadOnly = true;
-    forEachUse(V, [&](const DeclRefExpr *Use) { ReadOnly = ReadOnly && readOnly(Use); });
-    return ReadOnly;
-  }
+  bool neverModified(const VarDecl *V) { return onlyRead(V, F->getBody()); }
 
   /// The particle parameter is never assigned another particle.
   bool neverReassigned(const ParmVarDecl *P) {
@@ -216,61 +194,6 @@ private:
     Finder.TraverseStmt(F->getBody());
   }
 
-  bool readOnly(const Expr *Use) {
-    const Expr *E = Use;
-    for (unsigned Depth = 0; Depth < 16; ++Depth) {
-      auto Parents = Ctx.getParents(*E);
-      if (Parents.size() != 1)
-        return false;
-      const DynTypedNode &P = Parents[0];
-      if (const auto *Paren = P.get<ParenExpr>()) {
-        E = Paren;
-      } else if (const auto *Cast = P.get<ImplicitCastExpr>()) {
-        if (Cast->getCastKind() == CK_LValueToRValue)
-          return true;
-        if (Cast->getCastKind() != CK_NoOp)
-          return false;
-        E = Cast;
-      } else if (const auto *Member = P.get<MemberExpr>()) {
-        auto Up = Ctx.getParents(*Member);
-        const auto *Call = Up.size() == 1 ? Up[0].get<CXXMemberCallExpr>() : nullptr;
-        return Call && Member->getBase() == E && Call->getMethodDecl() &&
-               Call->getMethodDecl()->isConst();
-      } else if (const auto *Call = P.get<CallExpr>()) {
-        return passedReadOnly(Call->getDirectCallee(), Call->arguments(), E);
-      } else if (const auto *Construct = P.get<CXXConstructExpr>()) {
-        return passedReadOnly(Construct->getConstructor(), Construct->arguments(), E);
-      } else {
-        return false;
-      }
-    }
-    return false;
-  }
-
-  /// E, one of Args, is read only by the callee: an operator's const object,
-  /// or a parameter taken by value or const reference.
-  template <typename Range>
-  static bool passedReadOnly(const FunctionDecl *Callee, Range Args, const Expr *E) {
-    if (!Callee)
-      return false;
-    unsigned I = 0;
-    for (const Expr *A : Args) {
-      if (A == E)
-        break;
-      ++I;
-    }
-    const auto *Method = dyn_cast<CXXMethodDecl>(Callee);
-    if (Method && !isa<CXXConstructorDecl>(Method)) { // an operator: the object first
-      if (I == 0)
-        return Method->isConst();
-      --I;
-    }
-    if (I >= Callee->getNumParams())
-      return false;
-    QualType T = Callee->getParamDecl(I)->getType();
-    return !T->isReferenceType() || isConstRef(T);
-  }
-
   ASTContext &Ctx;
   const Diagnoser &D;
   const FunctionDecl *F;
@@ -286,9 +209,7 @@ public:
   bool VisitFunctionDecl(FunctionDecl *F) {
     const auto *Method = dyn_cast<CXXMethodDecl>(F);
     if (!F->doesThisDeclarationHaveABody() || (Method && Method->getParent()->isLambda()) ||
-        !isUserCode(Ctx.getSourceManager(), F) ||
-        !Ctx.getSourceManager().isWrittenInMainFile(
-            Ctx.getSourceManager().getExpansionLoc(F->getLocation())))
+        !isUserCode(Ctx.getSourceManager(), F))
       return true;
     bool HasList = false, HasParticle = false;
     for (const ParmVarDecl *P : F->parameters()) {

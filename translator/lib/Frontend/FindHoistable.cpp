@@ -1,5 +1,6 @@
 //===- FindHoistable.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/FindHoistable.h"
+#include "wash/translator/Frontend/AstQueries.h"
 #include "wash/translator/Frontend/PureFunctions.h"
 #include "wash/translator/Frontend/WashApi.h"
 
@@ -34,99 +35,26 @@ bool isDouble(QualType T) {
          T.getCanonicalType().getUnqualifiedType()->isSpecificBuiltinType(BuiltinType::Double);
 }
 
-/// Who calls whom among the user's functions, and which functions some code
-/// other than a force kernel's calls may run (main, another kind of kernel, a
-/// lambda, an initialiser, a function whose address is taken).
-class CallGraph : public RecursiveASTVisitor<CallGraph> {
+/// For each function, the force kernels whose calls reach it; none when
+/// anything else may run it (main, another kind of kernel, a lambda, an
+/// initialiser, a caller through its address).
+class KernelReach {
 public:
-  CallGraph(ASTContext &Ctx, const AstRefs &Refs, const std::vector<Kernel> &Kernels) : Ctx(Ctx) {
-    for (unsigned K = 0; K < Kernels.size(); ++K)
-      if (K < Refs.Kernels.size() && Refs.Kernels[K])
-        (Kernels[K].Kind == KernelKind::Force ? ForceKernels : OtherRoots)
-            .insert(canonical(Refs.Kernels[K]));
-    if (Refs.Main)
-      OtherRoots.insert(canonical(Refs.Main));
-  }
-
-  bool shouldVisitTemplateInstantiations() const { return true; }
-  bool shouldVisitImplicitCode() const { return true; }
-
-  bool TraverseFunctionDecl(FunctionDecl *FD) { return traverseFunction(FD); }
-  bool TraverseCXXMethodDecl(CXXMethodDecl *FD) {
-    Stack.push_back(
-        nullptr); // members (a lambda's too) are not followed: their calls may run anywhere
-    bool Result = RecursiveASTVisitor::TraverseCXXMethodDecl(FD);
-    Stack.pop_back();
-    return Result;
-  }
-  bool TraverseLambdaExpr(LambdaExpr *L) {
-    Stack.push_back(nullptr); // a lambda may run anywhere
-    bool Result = RecursiveASTVisitor::TraverseLambdaExpr(L);
-    Stack.pop_back();
-    return Result;
-  }
-
-  bool VisitCallExpr(CallExpr *E) {
-    const FunctionDecl *Callee = canonical(E->getDirectCallee());
-    if (!Callee)
-      return true;
-    CalleeRefs.insert(E->getCallee()->IgnoreParenImpCasts());
-    const FunctionDecl *Caller = Stack.empty() ? nullptr : Stack.back();
-    if (!Caller || OtherRoots.count(Caller))
-      Unsafe.insert(Callee);
-    else
-      Callees[Caller].insert(Callee);
-    CallSites[Callee].push_back(E);
-    return true;
-  }
-
-  bool VisitDeclRefExpr(DeclRefExpr *E) {
-    if (const auto *FD = dyn_cast<FunctionDecl>(E->getDecl()))
-      FunctionRefs.push_back(E);
-    return true;
-  }
-
-  bool VisitOverloadExpr(OverloadExpr *E) { // names resolved only later
-    for (const NamedDecl *ND : E->decls())
-      if (const auto *FD = dyn_cast<FunctionDecl>(ND->getUnderlyingDecl()))
-        Unsafe.insert(canonical(FD));
-    return true;
-  }
-
-  /// Finishes the graph: the functions unsafe code reaches, and for each
-  /// function the force kernels whose calls reach it.
-  void close(const std::vector<const FunctionDecl *> &Kernels) {
-    for (const DeclRefExpr *Ref : FunctionRefs)
-      if (!CalleeRefs.count(Ref) && !inRegistration(Ref))
-        Unsafe.insert(canonical(cast<FunctionDecl>(Ref->getDecl())));
-    for (const FunctionDecl *Root : OtherRoots)
-      Unsafe.insert(Root);
-    std::vector<const FunctionDecl *> Work(Unsafe.begin(), Unsafe.end());
-    while (!Work.empty()) {
-      const FunctionDecl *F = Work.back();
-      Work.pop_back();
-      for (const FunctionDecl *C : Callees[F])
-        if (Unsafe.insert(C).second)
-          Work.push_back(C);
-    }
-    for (unsigned K = 0; K < Kernels.size(); ++K) {
-      const FunctionDecl *Root = canonical(Kernels[K]);
-      if (!Root || !ForceKernels.count(Root))
-        continue;
-      std::set<const FunctionDecl *> Seen = {Root};
-      std::vector<const FunctionDecl *> Todo = {Root};
-      while (!Todo.empty()) {
-        const FunctionDecl *F = Todo.back();
-        Todo.pop_back();
+  KernelReach(const ProgramIndex &Index, const AstRefs &Refs, const std::vector<Kernel> &Kernels) {
+    std::vector<const FunctionDecl *> Others(Index.runAnywhere().begin(),
+                                             Index.runAnywhere().end());
+    std::vector<unsigned> Forces;
+    for (unsigned K = 0; K < Kernels.size() && K < Refs.Kernels.size(); ++K)
+      if (Refs.Kernels[K])
+        Kernels[K].Kind == KernelKind::Force ? Forces.push_back(K)
+                                             : Others.push_back(Refs.Kernels[K]);
+    Others.push_back(Refs.Main);
+    Unsafe = Index.reachableFrom(Others);
+    for (unsigned K : Forces)
+      for (const FunctionDecl *F : Index.reachableFrom({Refs.Kernels[K]}))
         ReachedBy[F].push_back(K);
-        for (const FunctionDecl *C : Callees[F])
-          if (Seen.insert(C).second)
-            Todo.push_back(C);
-      }
-    }
   }
 
-  /// The force kernels reaching F, none if anything else may run it.
   std::vector<unsigned> kernelsReaching(const FunctionDecl *F) const {
     F = canonical(F);
     auto It = ReachedBy.find(F);
@@ -135,43 +63,9 @@ public:
     return It->second;
   }
 
-  const std::vector<const CallExpr *> &callsOf(const FunctionDecl *F) {
-    return CallSites[canonical(F)];
-  }
-
 private:
-  bool traverseFunction(FunctionDecl *FD) {
-    Stack.push_back(canonical(FD));
-    bool Result = RecursiveASTVisitor::TraverseFunctionDecl(FD);
-    Stack.pop_back();
-    return Result;
-  }
-
-  /// A kernel's function named in the call that registers it.
-  bool inRegistration(const Expr *Ref) const {
-    const Expr *E = Ref;
-    for (unsigned Depth = 0; Depth < 6; ++Depth) {
-      auto Parents = Ctx.getParents(*E);
-      if (Parents.size() != 1)
-        return false;
-      if (const auto *Call = Parents[0].get<CallExpr>())
-        return isWashFunction(Call->getDirectCallee());
-      const auto *Up = Parents[0].get<Expr>();
-      if (!Up || !(isa<ImplicitCastExpr>(Up) || isa<ParenExpr>(Up) || isa<UnaryOperator>(Up)))
-        return false;
-      E = Up;
-    }
-    return false;
-  }
-
-  ASTContext &Ctx;
-  std::set<const FunctionDecl *> ForceKernels, OtherRoots, Unsafe;
-  std::vector<const FunctionDecl *> Stack;
-  std::map<const FunctionDecl *, std::set<const FunctionDecl *>> Callees;
-  std::map<const FunctionDecl *, std::vector<const CallExpr *>> CallSites;
+  std::set<const FunctionDecl *> Unsafe;
   std::map<const FunctionDecl *, std::vector<unsigned>> ReachedBy;
-  std::set<const Expr *> CalleeRefs;
-  std::vector<const DeclRefExpr *> FunctionRefs;
 };
 
 /// The text of an expression over one neighbour, for any row: what
@@ -179,8 +73,8 @@ private:
 class Printer {
 public:
   Printer(ASTContext &Ctx, const FunctionDecl *F, const std::set<const VarDecl *> &LoopVars,
-          CallGraph &Graph, Purity &Pure)
-      : Ctx(Ctx), F(F), LoopVars(LoopVars), Graph(Graph), Pure(Pure) {}
+          const ProgramIndex &Index, Purity &Pure)
+      : Ctx(Ctx), F(F), LoopVars(LoopVars), Index(Index), Pure(Pure) {}
 
   std::vector<HoistPiece> Pieces;
   FieldSet Reads;
@@ -331,7 +225,7 @@ private:
     // A local never modified: its initialiser, converted to its type.
     if (isa<ParmVarDecl>(V) || !V->hasLocalStorage() || V->getDeclContext() != F || !V->getInit() ||
         V->getType()->isReferenceType() || V->isCXXForRangeDecl() || LoopVars.count(V) ||
-        !onlyRead(V))
+        !onlyRead(V, F->getBody()))
       return false;
     const Expr *Init = V->getInit();
     bool Same = typeName(Init->IgnoreImpCasts()->getType()) == typeName(V->getType()) &&
@@ -358,7 +252,7 @@ private:
     const auto *P = dyn_cast<ParmVarDecl>(V);
     if (!P || P->getDeclContext() != F || !Purity::parameterReadOnly(P->getType()))
       return std::nullopt;
-    const auto &Calls = Graph.callsOf(F);
+    const auto &Calls = Index.callsOf(F);
     const VarDecl *Bound = nullptr;
     for (const CallExpr *Call : Calls) {
       unsigned I = P->getFunctionScopeIndex();
@@ -376,38 +270,10 @@ private:
     return constant(Bound);
   }
 
-  /// Every use of V reads its value.
-  bool onlyRead(const VarDecl *V) {
-    struct Uses : RecursiveASTVisitor<Uses> {
-      const VarDecl *V;
-      ASTContext &Ctx;
-      bool Read = true;
-      Uses(const VarDecl *V, ASTContext &Ctx) : V(V), Ctx(Ctx) {}
-      bool VisitDeclRefExpr(DeclRefExpr *E) {
-        if (E->getDecl() != V)
-          return true;
-        const Expr *At = E;
-        while (true) {
-          auto Parents = Ctx.getParents(*At);
-          const auto *Up = Parents.size() == 1 ? Parents[0].get<Expr>() : nullptr;
-          if (const auto *Paren = dyn_cast_or_null<ParenExpr>(Up)) {
-            At = Paren;
-            continue;
-          }
-          const auto *Cast = dyn_cast_or_null<ImplicitCastExpr>(Up);
-          Read = Read && Cast && Cast->getCastKind() == CK_LValueToRValue;
-          return true;
-        }
-      }
-    } Finder(V, Ctx);
-    Finder.TraverseStmt(F->getBody());
-    return Finder.Read;
-  }
-
   ASTContext &Ctx;
   const FunctionDecl *F;
   const std::set<const VarDecl *> &LoopVars;
-  CallGraph &Graph;
+  const ProgramIndex &Index;
   Purity &Pure;
 };
 
@@ -415,9 +281,9 @@ private:
 class FunctionScan : public RecursiveASTVisitor<FunctionScan> {
 public:
   FunctionScan(ASTContext &Ctx, const Diagnoser &D, const FunctionDecl *F,
-               std::vector<unsigned> Kernels, CallGraph &Graph, Purity &Pure,
+               std::vector<unsigned> Kernels, const ProgramIndex &Index, Purity &Pure,
                std::vector<HoistedExpr> &Found)
-      : Ctx(Ctx), D(D), F(F), Kernels(std::move(Kernels)), Graph(Graph), Pure(Pure), Found(Found) {}
+      : Ctx(Ctx), D(D), F(F), Kernels(std::move(Kernels)), Index(Index), Pure(Pure), Found(Found) {}
 
   void run() {
     struct Loops : RecursiveASTVisitor<Loops> {
@@ -448,7 +314,7 @@ public:
     if (!E || isa<ImplicitCastExpr, MaterializeTemporaryExpr, FullExpr, ConstantExpr>(E) ||
         !isDouble(E->getType()) || E->isGLValue())
       return RecursiveASTVisitor::TraverseStmt(S);
-    Printer P(Ctx, F, LoopVars, Graph, Pure);
+    Printer P(Ctx, F, LoopVars, Index, Pure);
     if (!P.print(E) || !P.Neighbour || !P.Worth)
       return RecursiveASTVisitor::TraverseStmt(S);
     HoistedExpr H;
@@ -482,7 +348,7 @@ private:
   const Diagnoser &D;
   const FunctionDecl *F;
   std::vector<unsigned> Kernels;
-  CallGraph &Graph;
+  const ProgramIndex &Index;
   Purity &Pure;
   std::vector<HoistedExpr> &Found;
   std::set<const VarDecl *> LoopVars;
@@ -490,12 +356,11 @@ private:
 
 } // namespace
 
-std::vector<HoistedExpr> findHoistable(ASTContext &Ctx, const Diagnoser &D, const AstRefs &Refs,
-                                       const std::vector<Kernel> &Kernels) {
+std::vector<HoistedExpr> findHoistable(const ProgramIndex &Index, const Diagnoser &D,
+                                       const AstRefs &Refs, const std::vector<Kernel> &Kernels) {
+  ASTContext &Ctx = Index.context();
   std::vector<HoistedExpr> Found;
-  CallGraph Graph(Ctx, Refs, Kernels);
-  Graph.TraverseDecl(Ctx.getTranslationUnitDecl());
-  Graph.close(Refs.Kernels);
+  KernelReach Graph(Index, Refs, Kernels);
   Purity Pure(Ctx.getSourceManager());
   // Every function with a body once, in source order.
   struct Functions : RecursiveASTVisitor<Functions> {
@@ -504,8 +369,7 @@ std::vector<HoistedExpr> findHoistable(ASTContext &Ctx, const Diagnoser &D, cons
     explicit Functions(const SourceManager &SM) : SM(SM) {}
     bool VisitFunctionDecl(FunctionDecl *FD) {
       if (FD->doesThisDeclarationHaveABody() && !isa<CXXMethodDecl>(FD) &&
-          FD->getTemplatedKind() == FunctionDecl::TK_NonTemplate &&
-          !SM.isInSystemHeader(SM.getExpansionLoc(FD->getLocation())))
+          FD->getTemplatedKind() == FunctionDecl::TK_NonTemplate && isUserCode(SM, FD))
         All.push_back(FD);
       return true;
     }
@@ -515,7 +379,7 @@ std::vector<HoistedExpr> findHoistable(ASTContext &Ctx, const Diagnoser &D, cons
     std::vector<unsigned> Reaching = Graph.kernelsReaching(F);
     if (Reaching.empty() || F->getLocation().isMacroID())
       continue;
-    FunctionScan Scan(Ctx, D, F, std::move(Reaching), Graph, Pure, Found);
+    FunctionScan Scan(Ctx, D, F, std::move(Reaching), Index, Pure, Found);
     Scan.run();
   }
   return Found;

@@ -1,5 +1,6 @@
 //===- GlobalWrites.cpp ---------------------------------------------------===//
 #include "wash/translator/Frontend/GlobalWrites.h"
+#include "wash/translator/Frontend/AstQueries.h"
 #include "wash/translator/Frontend/WashApi.h"
 #include "wash/translator/Frontend/WriteAccess.h"
 
@@ -17,23 +18,10 @@ constexpr unsigned MaxDepth = 64;
 void merge(StorageRoots &Into, const StorageRoots &From) { Into.insert(From.begin(), From.end()); }
 
 const Expr *strip(const Expr *E) {
-  for (unsigned Depth = 0; E && Depth < MaxDepth; ++Depth) {
-    const Expr *Next = E->IgnoreParenCasts();
-    if (const auto *M = dyn_cast<MaterializeTemporaryExpr>(Next))
-      Next = M->getSubExpr();
-    else if (const auto *B = dyn_cast<CXXBindTemporaryExpr>(Next))
-      Next = B->getSubExpr();
-    else if (const auto *F = dyn_cast<FullExpr>(Next))
-      Next = F->getSubExpr();
-    else if (const auto *D = dyn_cast<CXXDefaultArgExpr>(Next))
-      Next = D->getExpr();
-    else if (const auto *IL = dyn_cast<CXXStdInitializerListExpr>(Next))
-      Next = IL->getSubExpr(); // The array the list's elements live in.
-    if (Next == E)
-      return E;
-    E = Next;
-  }
-  return E;
+  PeelOptions Through;
+  Through.ExplicitCasts = Through.DefaultArguments = Through.InitializerLists = true;
+  Through.IsCopy = noConstruction;
+  return peel(E, Through);
 }
 
 /// The class of `this` when E, a write's target, goes through a reference

@@ -1,8 +1,10 @@
 //===- InferAccesses.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/InferAccesses.h"
+#include "wash/translator/Frontend/AstQueries.h"
 #include "wash/translator/Frontend/ForceName.h"
 #include "wash/translator/Frontend/GlobalWrites.h"
 #include "wash/translator/Frontend/ParticleRoles.h"
+#include "wash/translator/Frontend/ProgramIndex.h"
 #include "wash/translator/Frontend/TypeName.h"
 #include "wash/translator/Frontend/WashApi.h"
 
@@ -29,10 +31,10 @@ struct Frame {
 
 class KernelAnalyser {
 public:
-  KernelAnalyser(ASTContext &Ctx, Diagnoser &D, const Kernel &K, std::vector<Access> &Out,
+  KernelAnalyser(ProgramIndex &Index, Diagnoser &D, const Kernel &K, std::vector<Access> &Out,
                  SourceLocation KernelLoc, const std::vector<ParticleType> &Types)
-      : Ctx(Ctx), D(D), K(K), Out(Out), KernelLoc(KernelLoc), Types(Types),
-        Shared(Ctx, D, kernelKindName(K.Kind), K.Function) {}
+      : Ctx(Index.context()), Index(Index), D(D), K(K), Out(Out), KernelLoc(KernelLoc),
+        Types(Types), Walk(Index), Shared(Ctx, D, kernelKindName(K.Kind), K.Function) {}
 
   void run(const FunctionDecl *Def) {
     // The driver calls the kernel by its plain name, with no template arguments.
@@ -53,7 +55,7 @@ public:
     if (!K.NeighbourType.empty())
       add({TypeField, Target::Neighbour, Mode::Read, std::nullopt, K.Pos});
     AllowShared = allowsSharedState(Def);
-    analyse(Def, Params);
+    analyse(Def, Params, KernelLoc);
     reportEscapedLambdas();
   }
 
@@ -75,33 +77,46 @@ private:
     return 0;
   }
 
-  Roles analyse(const FunctionDecl *FD, const std::vector<Roles> &Params) {
+  /// The roles FD returns, called at At with parameters of roles Params.
+  Roles analyse(const FunctionDecl *FD, const std::vector<Roles> &Params, SourceLocation At) {
     auto Key = std::make_pair(FD->getCanonicalDecl(), Params);
     if (auto It = Memo.find(Key); It != Memo.end())
       return It->second;
-    if (Budget == 0) {
-      D.report(DiagId::AnalysisTooComplex, KernelLoc, {K.Function});
+    Roles Result = 0;
+    switch (Walk.enter(FD, [&] { Result = analyseBody(FD, Params); })) {
+    case CallWalk<>::Entry::Entered:
+      break;
+    case CallWalk<>::Entry::Recursive: {
+      std::string Name = isLambda(FD) ? "lambda" : FD->getQualifiedNameAsString();
+      D.report(DiagId::Recursion, At, {Name, K.Function});
+      D.report(DiagId::NoteKernelRegisteredHere, KernelLoc, {K.Function});
       return 0;
     }
-    --Budget;
+    case CallWalk<>::Entry::OverBudget:
+      if (!std::exchange(BudgetReported, true))
+        D.report(DiagId::AnalysisTooComplex, KernelLoc, {K.Function});
+      return 0;
+    }
+    // Lambdas see their enclosing frame, so their results depend on more
+    // than their parameters: only functions are memoised.
+    if (!isLambda(FD))
+      Memo[Key] = Result;
+    return Result;
+  }
+
+  Roles analyseBody(const FunctionDecl *FD, const std::vector<Roles> &Params) {
     if (isLambda(FD))
       AnalysedLambdas.insert(cast<CXXMethodDecl>(FD)->getParent());
     Frame F;
     for (unsigned I = 0; I < FD->getNumParams() && I < Params.size(); ++I)
       F.Vars[FD->getParamDecl(I)] = Params[I];
     Frames.push_back(&F);
-    Stack.push_back(FD->getCanonicalDecl());
     // Flow-insensitive: first let variable roles reach a fixed point, so a
     // variable assigned a neighbour late counts as a neighbour everywhere.
     for (unsigned Round = 0; Round < 8 && bind(FD->getBody()); ++Round)
       ;
     record(FD->getBody());
-    Stack.pop_back();
     Frames.pop_back();
-    // Lambdas see their enclosing frame, so their results depend on more
-    // than their parameters: only functions are memoised.
-    if (!isLambda(FD))
-      Memo[Key] = F.Return;
     return F.Return;
   }
 
@@ -211,16 +226,17 @@ private:
   }
 
   ASTContext &Ctx;
+  ProgramIndex &Index;
   Diagnoser &D;
   const Kernel &K;
   std::vector<Access> &Out; ///< The kernel's Kernel::Accesses.
   SourceLocation KernelLoc;
   const std::vector<ParticleType> &Types;
   std::vector<Frame *> Frames;
-  std::vector<const FunctionDecl *> Stack;
+  CallWalk<> Walk;
+  bool BudgetReported = false;
   std::map<std::pair<const FunctionDecl *, std::vector<Roles>>, Roles> Memo;
   std::set<std::tuple<std::string, Target, Mode, unsigned, unsigned>> Recorded;
-  unsigned Budget = 20000;
   // Escapes: particles reaching code the analysis does not follow.
   std::set<const Expr *> DirectCallees;
   std::vector<const LambdaExpr *> ParticleLambdas;
@@ -269,7 +285,7 @@ void KernelAnalyser::call(const CallExpr *CE) {
   }
   if (isWashFunction(FD)) {
     // User code in namespace wash is not the API, but is not followed either.
-    if (!washCall(FD) && isUserCode(Ctx.getSourceManager(), FD) && anyParticleArg(CE))
+    if (!washCall(FD) && Index.isUserFunction(FD) && anyParticleArg(CE))
       D.report(DiagId::HelperInWashNamespace, CE->getBeginLoc(), {FD->getQualifiedNameAsString()});
     return;
   }
@@ -279,8 +295,7 @@ void KernelAnalyser::call(const CallExpr *CE) {
     D.report(DiagId::IndirectCall, CE->getBeginLoc(), {K.Function});
     return;
   }
-  const FunctionDecl *Def = FD->getDefinition();
-  if (isUserCode(Ctx.getSourceManager(), Def ? Def : FD))
+  if (Index.isUserFunction(FD))
     return userCall(CE, FD);
   if (libraryHelperCall(CE, FD))
     return;
@@ -393,23 +408,10 @@ bool KernelAnalyser::particleType(const CallExpr *CE, const Expr *NameArg,
 
 /// The lambda an argument evaluates to, looking through copies and variables.
 static const LambdaExpr *lambdaOf(const Expr *E) {
-  for (unsigned Depth = 0; E && Depth < 16; ++Depth) {
-    E = E->IgnoreParenImpCasts();
-    if (const auto *L = dyn_cast<LambdaExpr>(E))
-      return L;
-    if (const auto *M = dyn_cast<MaterializeTemporaryExpr>(E))
-      E = M->getSubExpr();
-    else if (const auto *B = dyn_cast<CXXBindTemporaryExpr>(E))
-      E = B->getSubExpr();
-    else if (const auto *C = dyn_cast<CXXConstructExpr>(E); C && C->getNumArgs() == 1)
-      E = C->getArg(0);
-    else if (const auto *DRE = dyn_cast<DeclRefExpr>(E)) {
-      const auto *VD = dyn_cast<VarDecl>(DRE->getDecl());
-      E = VD ? VD->getInit() : nullptr;
-    } else
-      return nullptr;
-  }
-  return nullptr;
+  PeelOptions Through;
+  Through.VariableInitialisers = true;
+  Through.IsCopy = constructsFromOneArgument;
+  return dyn_cast_or_null<LambdaExpr>(peel(E, Through));
 }
 
 /// Standard library calls are not followed, except into lambdas they are
@@ -438,7 +440,7 @@ void KernelAnalyser::libraryCall(const CallExpr *CE) {
       for (const ParmVarDecl *P : Op->parameters())
         Params.push_back(involvesParticle(P->getType()) ? Given : 0);
       if (!particleThroughTemplate(Op, Params, CE->getBeginLoc()))
-        analyse(Op, Params);
+        analyse(Op, Params, CE->getBeginLoc());
     }
   }
 }
@@ -498,8 +500,7 @@ bool KernelAnalyser::usesParticle(const LambdaExpr *L) {
 /// calls made through the pointer or std::function are not followed.
 void KernelAnalyser::functionReference(const DeclRefExpr *DRE) {
   const auto *FD = dyn_cast<FunctionDecl>(DRE->getDecl());
-  if (!FD || DirectCallees.count(DRE) || isWashFunction(FD) ||
-      !isUserCode(Ctx.getSourceManager(), FD))
+  if (!FD || DirectCallees.count(DRE) || isWashFunction(FD) || !Index.isUserFunction(FD))
     return;
   for (const ParmVarDecl *P : FD->parameters())
     if (involvesParticle(P->getType())) {
@@ -569,11 +570,6 @@ void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
     }
     return;
   }
-  if (std::find(Stack.begin(), Stack.end(), Def->getCanonicalDecl()) != Stack.end()) {
-    D.report(DiagId::Recursion, CE->getBeginLoc(), {Def->getQualifiedNameAsString(), K.Function});
-    D.report(DiagId::NoteKernelRegisteredHere, KernelLoc, {K.Function});
-    return;
-  }
   // A member operator call (a lambda's operator()) passes the object first.
   unsigned Skip = isa<CXXOperatorCallExpr>(CE) && isa<CXXMethodDecl>(FD) ? 1 : 0;
   std::vector<Roles> Params;
@@ -581,17 +577,17 @@ void KernelAnalyser::userCall(const CallExpr *CE, const FunctionDecl *FD) {
     Params.push_back(roleOf(CE->getArg(I)));
   if (particleThroughTemplate(Def, Params, CE->getBeginLoc()))
     return;
-  Frames.back()->Calls[CE] = analyse(Def, Params);
+  Frames.back()->Calls[CE] = analyse(Def, Params, CE->getBeginLoc());
 }
 
 } // namespace
 
 std::optional<std::vector<std::vector<Access>>>
-inferAccesses(ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs,
+inferAccesses(ProgramIndex &Index, Diagnoser &D, const AstRefs &Refs,
               const std::vector<Kernel> &Kernels, const std::vector<ParticleType> &Types) {
   std::vector<std::vector<Access>> Accesses(Kernels.size());
   for (unsigned I = 0; I < Kernels.size(); ++I) {
-    KernelAnalyser A(Ctx, D, Kernels[I], Accesses[I], D.fromPos(Kernels[I].Pos), Types);
+    KernelAnalyser A(Index, D, Kernels[I], Accesses[I], D.fromPos(Kernels[I].Pos), Types);
     A.run(Refs.Kernels[I]);
   }
   if (D.hasErrors())

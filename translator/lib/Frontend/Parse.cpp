@@ -1,5 +1,6 @@
 //===- Parse.cpp ----------------------------------------------------------===//
 #include "wash/translator/Frontend/Parse.h"
+#include "wash/translator/Emit/ProjectManifest.h"
 #include "wash/translator/Frontend/DetectDimension.h"
 #include "wash/translator/Frontend/ReadableFiles.h"
 
@@ -227,6 +228,24 @@ std::vector<std::string> inputFiles(const std::string &Source, const IncludeDire
     if (I.File)
       if (std::string Path = absolutePath(I.File->getName()); Seen.insert(Path).second)
         Files.push_back(Path);
+  return Files;
+}
+
+std::vector<InputFile> hashedInputFiles(clang::SourceManager &SM, const std::string &Source,
+                                        const IncludeDirectives &Includes) {
+  std::vector<InputFile> Files = {
+      {absolutePath(Source), contentHash(SM.getBufferData(SM.getMainFileID()))}};
+  llvm::StringSet<> Seen;
+  Seen.insert(Files[0].Path);
+  for (const IncludeDirective &I : Includes) {
+    if (!I.File)
+      continue;
+    std::string Path = absolutePath(I.File->getName());
+    if (!Seen.insert(Path).second)
+      continue;
+    std::optional<llvm::MemoryBufferRef> Buffer = SM.getMemoryBufferForFileOrNone(*I.File);
+    Files.push_back({Path, Buffer ? contentHash(Buffer->getBuffer()) : ""});
+  }
   return Files;
 }
 

@@ -1,5 +1,6 @@
 //===- ParticleRoles.cpp --------------------------------------------------===//
 #include "wash/translator/Frontend/ParticleRoles.h"
+#include "wash/translator/Frontend/AstQueries.h"
 #include "wash/translator/Frontend/WashApi.h"
 
 #include "clang/AST/ExprCXX.h"
@@ -9,25 +10,15 @@ using namespace clang;
 namespace wash::tr {
 
 Roles RoleEvaluator::of(const Expr *E) const {
-  for (unsigned Depth = 0; E && Depth < 1000; ++Depth) {
-    if (const auto *P = dyn_cast<ParenExpr>(E))
-      E = P->getSubExpr();
-    else if (const auto *C = dyn_cast<CastExpr>(E)) // const_cast, C casts, decay...
-      E = C->getSubExpr();
-    else if (const auto *M = dyn_cast<MaterializeTemporaryExpr>(E))
-      E = M->getSubExpr();
-    else if (const auto *B = dyn_cast<CXXBindTemporaryExpr>(E))
-      E = B->getSubExpr();
-    else if (const auto *F = dyn_cast<FullExpr>(E))
-      E = F->getSubExpr();
-    else if (const auto *CE = dyn_cast<CXXConstructExpr>(E)) {
-      // A copy of a particle is a handle to the same particle.
-      if (CE->getNumArgs() != 1 || !involvesParticle(CE->getType()))
-        return 0;
-      E = CE->getArg(0);
-    } else
-      break;
-  }
+  PeelOptions Through;
+  Through.ExplicitCasts = true; // const_cast, C casts, decay...
+  // A copy of a particle is a handle to the same particle.
+  Through.IsCopy = [](const CXXConstructExpr *CE) {
+    return CE->getNumArgs() == 1 && involvesParticle(CE->getType());
+  };
+  E = E ? peel(E, Through) : nullptr;
+  if (isa_and_nonnull<CXXConstructExpr>(E))
+    return 0;
   if (!E)
     return 0;
   if (const auto *DRE = dyn_cast<DeclRefExpr>(E))

@@ -25,8 +25,7 @@ bool isMathFunction(const FunctionDecl *FD, const SourceManager &SM) {
       "log1p", "fabs", "abs",  "sin",      "cos",   "tan",   "asin", "acos",  "atan",
       "atan2", "sinh", "cosh", "tanh",     "hypot", "floor", "ceil", "trunc", "round",
       "fmin",  "fmax", "fma",  "copysign", "min",   "max"};
-  if (!FD->getIdentifier() || !Names.count(FD->getName().str()) ||
-      !SM.isInSystemHeader(SM.getExpansionLoc(FD->getLocation())))
+  if (!FD->getIdentifier() || !Names.count(FD->getName().str()) || isUserCode(SM, FD))
     return false;
   const DeclContext *DC = FD->getDeclContext()->getRedeclContext();
   if (DC->isTranslationUnit())
@@ -42,7 +41,7 @@ bool Purity::pure(const FunctionDecl *FD) {
     return true;
   FD = FD->getDefinition();
   if (!FD || isa<CXXMethodDecl>(FD) || FD->isVariadic() || isWashFunction(FD) ||
-      SM.isInSystemHeader(SM.getExpansionLoc(FD->getLocation())))
+      !isUserCode(SM, FD))
     return false;
   auto [It, New] = Known.try_emplace(FD, false); // false while in progress: no recursion
   if (!New)

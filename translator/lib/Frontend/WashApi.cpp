@@ -1,5 +1,6 @@
 //===- WashApi.cpp --------------------------------------------------------===//
 #include "wash/translator/Frontend/WashApi.h"
+#include "wash/translator/Frontend/AstQueries.h"
 #include "wash/translator/Frontend/ParameterBindings.h"
 
 #include "clang/AST/DeclCXX.h"
@@ -103,58 +104,11 @@ static bool convertsOneArgument(const CXXConstructExpr *CE) {
 }
 
 static const Expr *stripStringWrappers(const Expr *E) {
-  while (true) {
-    E = E->IgnoreParenImpCasts();
-    if (const auto *M = dyn_cast<MaterializeTemporaryExpr>(E))
-      E = M->getSubExpr();
-    else if (const auto *B = dyn_cast<CXXBindTemporaryExpr>(E))
-      E = B->getSubExpr();
-    else if (const auto *C = dyn_cast<ExprWithCleanups>(E))
-      E = C->getSubExpr();
-    else if (const auto *F = dyn_cast<CXXFunctionalCastExpr>(E))
-      E = F->getSubExpr();
-    else if (const auto *D = dyn_cast<CXXDefaultArgExpr>(E))
-      E = D->getExpr(); // A default names no parameter: it needs no context.
-    else if (const auto *CE = dyn_cast<CXXConstructExpr>(E); CE && convertsOneArgument(CE))
-      E = CE->getArg(0); // std::string(const char *) or a copy of a string.
-    else
-      return E;
-  }
-}
-
-/// Whether Parent, holding Use, only reads the variable Use names.
-static bool onlyReads(const Stmt *Parent, const DeclRefExpr *Use) {
-  if (const auto *Cast = dyn_cast<ImplicitCastExpr>(Parent))
-    return Cast->getCastKind() == CK_LValueToRValue || Cast->getCastKind() == CK_NoOp;
-  if (const auto *Member = dyn_cast<MemberExpr>(Parent)) {
-    const auto *Method = dyn_cast<CXXMethodDecl>(Member->getMemberDecl());
-    return Method && Method->isConst();
-  }
-  const FunctionDecl *Callee = nullptr;
-  llvm::ArrayRef<const Expr *> Args;
-  if (const auto *Construct = dyn_cast<CXXConstructExpr>(Parent)) {
-    Callee = Construct->getConstructor();
-    Args = llvm::ArrayRef(Construct->getArgs(), Construct->getNumArgs());
-  } else if (const auto *Call = dyn_cast<CallExpr>(Parent)) {
-    Callee = Call->getDirectCallee();
-    Args = llvm::ArrayRef(Call->getArgs(), Call->getNumArgs());
-    if (isa<CXXOperatorCallExpr>(Call) && isa_and_nonnull<CXXMethodDecl>(Callee)) {
-      if (!Args.empty() && Args[0] == Use) // the object of an operator
-        return cast<CXXMethodDecl>(Callee)->isConst();
-      Args = Args.drop_front();
-    }
-  }
-  if (!Callee)
-    return false;
-  // Bound to a parameter that cannot change it: a copy or a const reference.
-  for (unsigned I = 0; I < Args.size(); ++I)
-    if (Args[I] == Use) {
-      if (I >= Callee->getNumParams())
-        return false;
-      QualType T = Callee->getParamDecl(I)->getType();
-      return !T->isReferenceType() || T.getNonReferenceType().isConstQualified();
-    }
-  return false;
+  PeelOptions Through;
+  Through.FunctionalCasts = true;
+  Through.DefaultArguments = true;      // A default names no parameter: it needs no context.
+  Through.IsCopy = convertsOneArgument; // std::string(const char *) or a copy of a string.
+  return peel(E, Through);
 }
 
 /// Whether the body of P's function may change P: the value a caller binds
@@ -170,35 +124,19 @@ static bool mayBeChanged(const ParmVarDecl *P) {
   if (!Body)
     return true;
   // Any use of P other than reading its value may change it.
-  bool Changed = false;
-  std::vector<const Stmt *> Work{Body};
-  while (!Changed && !Work.empty()) {
-    const Stmt *S = Work.back();
-    Work.pop_back();
-    for (const Stmt *Child : S->children()) {
-      const auto *DRE = dyn_cast_or_null<DeclRefExpr>(Child);
-      if (!DRE || DRE->getDecl() != P) {
-        if (Child)
-          Work.push_back(Child);
-        continue;
-      }
-      Changed = Changed || !onlyReads(S, DRE);
-    }
-  }
-  return Changed;
+  return !onlyRead(P, Body);
 }
 
 static std::optional<std::string> evaluateString(const Expr *E, ASTContext &Ctx,
                                                  const CallContext *Context, unsigned Depth);
 
 /// The value every visible call binds P to.
-static std::optional<std::string> soleValue(const ParmVarDecl *P, ASTContext &Ctx,
-                                            unsigned Depth) {
+static std::optional<std::string> soleValue(const ParmVarDecl *P, ASTContext &Ctx, unsigned Depth) {
   const std::vector<const CallExpr *> &Calls = visibleCalls(P, Ctx);
   std::optional<std::string> Value;
   for (const CallExpr *Call : Calls) {
-    auto Bound = evaluateString(argumentFor(Call, Call->getDirectCallee(), P), Ctx, nullptr,
-                                Depth + 1);
+    auto Bound =
+        evaluateString(argumentFor(Call, Call->getDirectCallee(), P), Ctx, nullptr, Depth + 1);
     if (!Bound || (Value && *Value != *Bound))
       return std::nullopt;
     Value = Bound;

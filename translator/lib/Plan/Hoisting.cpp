@@ -8,8 +8,12 @@ namespace wash::tr {
 std::vector<HoistedExpr> planHoists(const std::vector<HoistedExpr> &Found,
                                     const std::vector<Kernel> &Kernels) {
   FieldSet Snapshotted;
-  for (const Kernel &K : Kernels)
+  // Fields a force kernel writes and reads through neighbours, with or
+  // without a snapshot: kept out of hoisting as before types were told apart.
+  for (const Kernel &K : Kernels) {
     Snapshotted.insert(K.Hazards.begin(), K.Hazards.end());
+    Snapshotted.insert(K.DisjointTypeWrites.begin(), K.DisjointTypeWrites.end());
+  }
   std::vector<HoistedExpr> Kept;
   for (const HoistedExpr &H : Found) {
     bool Current = !H.Kernels.empty();

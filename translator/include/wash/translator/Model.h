@@ -100,13 +100,17 @@ struct Kernel {
   // Filled by findAlwaysWrites (update and force kernels): own fields set on
   // every path through the kernel.
   FieldSet AlwaysWrites;
-  // From findHazards: own writes also read through neighbours.
-  FieldSet Hazards;
+  // From findHazards: own writes also read through neighbours (a snapshot
+  // each), and those that need none since the kernel's particles and its
+  // neighbours are of different types.
+  FieldSet Hazards, DisjointTypeWrites;
   // From planNeighbourSearch (force kernels only).
   int SearchGroup = -1;
-  // From planHalos (force kernels only): fields halo particles need, and
-  // those that must be sent before this kernel (the rest are still current).
-  FieldSet HaloFields, HaloSends;
+  // From planHalos (force kernels only): fields halo particles need, those
+  // that must be sent before this kernel (to the rows kept from the previous
+  // search where this kernel rebuilds the halo), those a rebuild sends to
+  // new rows, and the needed fields that are current and not sent.
+  FieldSet HaloFields, HaloSends, HaloNewRowSends, HaloCurrent;
 };
 
 enum class FieldOrigin { Builtin, Registered, Created };

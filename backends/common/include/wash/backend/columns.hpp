@@ -117,4 +117,14 @@ template <typename Particles> void keepRows(Particles &P, const std::vector<Inde
   removeRows(P, gone);
 }
 
+/// The columns a neighbour search carries to halo copies (wash/mpi/halo.hpp):
+/// `kept` to a copy of a particle the receiving process held a copy of, from
+/// the same sender, at the previous search; `fresh` (every column `kept`
+/// visits and more) to the others. As a column visitor it visits `fresh`.
+template <typename Kept, typename Fresh> struct HaloColumns {
+  Kept kept;
+  Fresh fresh;
+  template <typename F> void operator()(F f) const { fresh(f); }
+};
+
 } // namespace wash::backend

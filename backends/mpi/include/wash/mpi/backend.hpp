@@ -53,24 +53,23 @@ public:
   /// everything local sorted by (cell, id). Migration moves every column.
   /// `h(row)`, where the rule reads smoothing lengths, lets images and the
   /// halo reach only as far as each particle's pairs do (pair_reach.hpp).
+  /// With backend::HaloColumns, rows kept from the previous halo receive
+  /// only its `kept` columns (halo_history.hpp); otherwise every row receives
+  /// every column `fields` visits.
   template <typename Particles, typename Fields,
             typename SmoothingLength = backend::NoSmoothingLength>
   void search(Particles &P, const backend::SearchGeometry &at, const ::wash::detail::Box &box,
               Fields fields, SmoothingLength h = {}) {
     const ::wash::detail::ProfileScope profiled("neighbour search");
-    {
-      const ::wash::detail::ProfileScope migration("particle migration (MPI)");
-      redistribute(P, domain_, halo_);
+    if constexpr (requires { fields.kept; }) {
+      const auto carried = carriedColumns(fields.kept, fields.fresh);
+      stashHalo(P, halo_.recv, history_, carried);
+      newSearch(P, at, box, fields.kept, carried, h);
+    } else {
+      history_.forget();
+      const auto nothing = [](auto) {};
+      newSearch(P, at, box, fields, nothing, h);
     }
-    const RowReach<SmoothingLength> reachOf{at, h};
-    backend::addImages<D>(P, halo_.owned, box, reachOf, halo_, &combineMax);
-    {
-      const ::wash::detail::ProfileScope exchange("halo exchange (MPI)");
-      buildHalo(P, domain_, reachOf, box, halo_, fields);
-    }
-    grid_.sort(P.pos, P.id, at.cellSize, order_);
-    P.forEachColumn([this](auto &column) { backend::permute(column, order_); });
-    halo_.permuted(order_);
   }
 
   /// Local images, then the halo copies of the columns `fields` visits.
@@ -140,12 +139,31 @@ public:
   }
 
 private:
+  template <typename Particles, typename Fields, typename Carried, typename SmoothingLength>
+  void newSearch(Particles &P, const backend::SearchGeometry &at, const ::wash::detail::Box &box,
+                 Fields fields, Carried carried, SmoothingLength h) {
+    {
+      const ::wash::detail::ProfileScope migration("particle migration (MPI)");
+      redistribute(P, domain_, halo_);
+    }
+    const RowReach<SmoothingLength> reachOf{at, h};
+    backend::addImages<D>(P, halo_.owned, box, reachOf, halo_, &combineMax);
+    {
+      const ::wash::detail::ProfileScope exchange("halo exchange (MPI)");
+      buildHalo(P, domain_, reachOf, box, halo_, fields, carried, history_);
+    }
+    grid_.sort(P.pos, P.id, at.cellSize, order_);
+    P.forEachColumn([this](auto &column) { backend::permute(column, order_); });
+    halo_.permuted(order_);
+  }
+
   /// Collective: the particles this rank holds (any share) go to their owners,
   /// on a domain balanced by a sample of every rank's cells; returns how many
   /// there are in all.
   template <typename Particles, typename CellSize>
   std::uint64_t settle(Particles &P, CellSize cellSize) {
     halo_.ownAll(P.size());
+    history_.forget();
     // cellSize() sees this rank's particles only: the largest over the ranks
     // that have some.
     const double largest = allreduceMax(P.size() ? cellSize() : 0.0);
@@ -210,6 +228,7 @@ private:
   std::vector<Index> order_;
   Domain<D> domain_;
   HaloPlan halo_;
+  HaloHistory history_;
 };
 
 } // namespace wash::mpi

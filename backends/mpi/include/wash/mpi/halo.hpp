@@ -17,9 +17,11 @@
 #include <wash/mpi/comm.hpp>
 #include <wash/mpi/domain.hpp>
 #include <wash/mpi/for_each.hpp>
+#include <wash/mpi/halo_history.hpp>
 #include <wash/mpi/pair_reach.hpp>
 #include <wash/detail/run_output.hpp>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <numeric>
@@ -169,14 +171,60 @@ void redistribute(Particles &P, Domain<D> &domain, HaloPlan &plan, double tolera
   migrate(P, domain, plan);
 }
 
+namespace detail {
+
+/// After the copies received `fields` (ids among them): kept rows take the
+/// columns `carried` visits from their previous copies, new rows receive
+/// them; then `history` remembers the ids sent and received.
+template <typename Particles, typename Carried>
+void completeNewRows(Particles &P, const std::vector<std::vector<Index>> &send,
+                     const std::vector<std::vector<Index>> &recv, Carried carried,
+                     HaloHistory &history) {
+  const int n = ranks();
+  std::vector<std::vector<Index>> sendNew(n), recvNew(n);
+  std::vector<std::pair<Index, std::size_t>> kept;
+  for (int r = 0; r < n; ++r) {
+    for (Index i : send[r])
+      if (!history.wasSent(r, P.id[i]))
+        sendNew[r].push_back(i);
+    for (Index q : recv[r]) {
+      const std::int64_t k = history.stashed(r, P.id[q]);
+      if (k < 0)
+        recvNew[r].push_back(q);
+      else
+        kept.emplace_back(q, std::size_t(k));
+    }
+  }
+  restoreStashed(history, kept, carried);
+  // Every rank visits the same columns: all skip the transfer, or none.
+  bool any = false;
+  carried([&](auto &) { any = true; });
+  if (any)
+    transfer(sendNew, recvNew, carried, traffic().halo);
+  history.sent.assign(n, {});
+  for (int r = 0; r < n; ++r) {
+    for (Index i : send[r])
+      history.sent[r].push_back(P.id[i]);
+    std::sort(history.sent[r].begin(), history.sent[r].end());
+  }
+  history.received.clear();
+  history.stash.clear();
+  history.stashRows = 0;
+}
+
+} // namespace detail
+
 /// Builds the halo for a new neighbour search: every owned particle (or local
 /// periodic image) that can pair with a particle of another rank's cell
 /// (pair_reach.hpp) is copied there, with the columns `fields` visits (id and
-/// pos must be among them). Call after redistribute and addImages: positions
+/// pos must be among them); a copy that is not kept (halo_history.hpp) also
+/// with those `carried` visits, which a kept one takes from its previous
+/// copy. Call after redistribute and addImages: positions
 /// [0, plan.owned.size()) are owned, the rest up to P.size() are images.
-template <int D, typename Particles, typename SmoothingLength, typename Fields>
+template <int D, typename Particles, typename SmoothingLength, typename Fields, typename Carried>
 void buildHalo(Particles &P, const Domain<D> &domain, const RowReach<SmoothingLength> &reachOf,
-               const ::wash::detail::Box &box, HaloPlan &plan, Fields fields) {
+               const ::wash::detail::Box &box, HaloPlan &plan, Fields fields, Carried carried,
+               HaloHistory &history) {
   const int n = ranks(), me = rank();
   const double radius = reachOf.at.reach;
   const std::size_t owned = P.size(); // senders: owned particles and images
@@ -290,6 +338,7 @@ void buildHalo(Particles &P, const Domain<D> &domain, const RowReach<SmoothingLe
       recv[r].push_back(next++);
   P.forEachColumn([&](auto &column) { column.resize(next); });
   detail::transfer(send, recv, fields, traffic().halo);
+  detail::completeNewRows(P, send, recv, carried, history);
   plan.send = std::move(send);
   plan.recv = std::move(recv);
   plan.ghosts = next - owned;

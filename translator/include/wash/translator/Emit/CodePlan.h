@@ -38,7 +38,7 @@ struct CodePlan {
   FieldSet Snapshotted;
   /// The magnitudes that read the distances the neighbour lists keep, by
   /// (line, column) of the call; none if the lists keep no distances.
-  std::map<std::pair<unsigned, unsigned>, const DistanceUse *> DistanceAt;
+  std::map<std::tuple<std::string, unsigned, unsigned>, const DistanceUse *> DistanceAt;
   bool keepsDistances() const { return !DistanceAt.empty(); }
   /// Model::Hoisted: column `hoisted_<index>` each, found by the file and the
   /// positions of the expression's first and last tokens.

@@ -13,6 +13,17 @@ namespace wash::tr {
 /// against the backend's CMake target, wash::<backend>.
 std::string emitCMakeLists(const CodePlan &Plan, const std::vector<std::string> &PackageHints);
 
+/// The program's target (and file) name in that project: `<stem>-<backend>`.
+std::string programTargetName(const std::string &Stem, Backend Target);
+
+/// Name as a CMake target or project name, which allow only these characters
+/// (CMP0037): a file called "my sim.cpp" gives the target my_sim-serial.
+std::string cmakeName(const std::string &Name);
+
+/// Text as a CMake argument: quoted unless it is a plain name, with \, ",
+/// $ and ; escaped (";" would otherwise split a list of sources).
+std::string cmakeArgument(const std::string &Text);
+
 /// Why the generated project cannot be built if the simulation's file name
 /// without extension is Stem ("" if it can): the generated files, targets and
 /// object paths carry it, and no quoting gets a ';', a '$' (make expands

@@ -22,4 +22,9 @@ bool emitProgram(clang::ASTContext &Ctx, Diagnoser &D, const Model &M, const Ast
                  const IncludeDirectives &Includes, const Options &Opts,
                  std::vector<GeneratedFile> &Files);
 
+/// Where a generated CMakeLists.txt looks for wash: next to the installed
+/// translator at ExecutablePath first, then the build tree this translator
+/// was built in.
+std::vector<std::string> packageHints(const std::string &ExecutablePath);
+
 } // namespace wash::tr

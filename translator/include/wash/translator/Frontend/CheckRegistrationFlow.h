@@ -2,6 +2,7 @@
 #pragma once
 
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/ProgramIndex.h"
 
 #include "clang/AST/ASTContext.h"
 #include "clang/AST/Decl.h"
@@ -16,6 +17,6 @@ namespace wash::tr {
 /// translated program: reports it at the call. Also reports a wash::start
 /// that may run more than once. Walks main like collectSimulation (calls as
 /// if inlined), iteratively. Returns false on error.
-bool checkRegistrationFlow(clang::ASTContext &Ctx, Diagnoser &D, const clang::FunctionDecl *Main);
+bool checkRegistrationFlow(ProgramIndex &Index, Diagnoser &D, const clang::FunctionDecl *Main);
 
 } // namespace wash::tr

@@ -3,6 +3,7 @@
 
 #include "wash/translator/Frontend/AstRefs.h"
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/ProgramIndex.h"
 #include "wash/translator/Model.h"
 
 #include "clang/AST/ASTContext.h"
@@ -27,7 +28,7 @@ struct Registrations {
 /// registration call in user code the walk did not reach, or reached inside
 /// a loop, and every use of a registration function other than a call.
 /// nullopt on error.
-std::optional<Registrations> collectSimulation(clang::ASTContext &Ctx, Diagnoser &D,
+std::optional<Registrations> collectSimulation(ProgramIndex &Index, Diagnoser &D,
                                                unsigned Dimension, AstRefs &Refs);
 
 } // namespace wash::tr

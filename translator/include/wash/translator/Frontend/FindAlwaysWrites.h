@@ -10,6 +10,7 @@
 #pragma once
 
 #include "wash/translator/Frontend/AstRefs.h"
+#include "wash/translator/Frontend/ProgramIndex.h"
 #include "wash/translator/Model.h"
 
 #include "clang/AST/ASTContext.h"
@@ -18,7 +19,7 @@ namespace wash::tr {
 
 /// Kernel::AlwaysWrites of each of Kernels (empty but for update and force
 /// kernels); Refs.Kernels are their definitions.
-std::vector<FieldSet> findAlwaysWrites(clang::ASTContext &Ctx, const AstRefs &Refs,
+std::vector<FieldSet> findAlwaysWrites(ProgramIndex &Index, const AstRefs &Refs,
                                        const std::vector<Kernel> &Kernels);
 
 } // namespace wash::tr

@@ -19,6 +19,7 @@
 
 #include "wash/translator/Frontend/AstRefs.h"
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/ProgramIndex.h"
 #include "wash/translator/Model.h"
 
 #include "clang/AST/ASTContext.h"
@@ -27,7 +28,7 @@ namespace wash::tr {
 
 /// Every such expression (Model::Hoisted), in source order; Kernels and
 /// Refs.Kernels are collectSimulation's.
-std::vector<HoistedExpr> findHoistable(clang::ASTContext &Ctx, const Diagnoser &D,
+std::vector<HoistedExpr> findHoistable(const ProgramIndex &Index, const Diagnoser &D,
                                        const AstRefs &Refs, const std::vector<Kernel> &Kernels);
 
 } // namespace wash::tr

@@ -8,6 +8,8 @@
 //===----------------------------------------------------------------------===//
 #pragma once
 
+#include "wash/translator/InputFile.h"
+
 #include "clang/Basic/SourceLocation.h"
 #include "clang/Basic/SourceManager.h"
 
@@ -38,5 +40,11 @@ struct IncludeDirectives : std::vector<IncludeDirective> {
 /// Every file the translation read: Source, then each included file once,
 /// in the order first included (absolute paths).
 std::vector<std::string> inputFiles(const std::string &Source, const IncludeDirectives &Includes);
+
+/// inputFiles, each with its content's hash: what `wash run` keys its cache
+/// on. Hashed from the source manager, so that an edit made while the
+/// translation runs is not taken for what it translated.
+std::vector<InputFile> hashedInputFiles(clang::SourceManager &SM, const std::string &Source,
+                                        const IncludeDirectives &Includes);
 
 } // namespace wash::tr

@@ -3,6 +3,7 @@
 
 #include "wash/translator/Frontend/AstRefs.h"
 #include "wash/translator/Frontend/Diagnoser.h"
+#include "wash/translator/Frontend/ProgramIndex.h"
 #include "wash/translator/Model.h"
 
 #include "clang/AST/ASTContext.h"
@@ -24,7 +25,7 @@ namespace wash::tr {
 /// particle that a per-particle kernel may change (GlobalWrites). nullopt on
 /// error.
 std::optional<std::vector<std::vector<Access>>>
-inferAccesses(clang::ASTContext &Ctx, Diagnoser &D, const AstRefs &Refs,
+inferAccesses(ProgramIndex &Index, Diagnoser &D, const AstRefs &Refs,
               const std::vector<Kernel> &Kernels, const std::vector<ParticleType> &Types);
 
 } // namespace wash::tr

@@ -14,7 +14,7 @@ namespace wash::tr {
 /// date on every row, copies included) and none is one a kernel writes on
 /// its particle while reading it through neighbours (a hazard, read from a
 /// snapshot). Reads the kernels' Kind, NeighbourReads (summariseAccesses)
-/// and Hazards (findHazards).
+/// and Hazards and DisjointTypeWrites (findHazards).
 std::vector<HoistedExpr> planHoists(const std::vector<HoistedExpr> &Found,
                                     const std::vector<Kernel> &Kernels);
 
