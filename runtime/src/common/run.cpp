@@ -339,7 +339,8 @@ void Run::reportCpu() const {
   std::printf("wash: warning: the steps got %.0f%% of the CPU time of %d thread%s (%.2f s of CPU "
               "in %.2f s) and were preempted %ld times: other processes are running on these "
               "cores, and the times above are theirs as much as this program's. For a true "
-              "figure run on idle cores or on fewer threads (OMP_NUM_THREADS); see "
+              "figure run on idle cores or on fewer threads (OMP_NUM_THREADS); on a busy machine "
+              "WASH_SHARED_MACHINE=1 makes waiting threads sleep; see "
               "docs/backends.md, \"Threads on a shared machine\"\n",
               100.0 * share, loopThreads, loopThreads == 1 ? "" : "s", stepCpuSeconds_,
               stepSeconds_, preempted);
